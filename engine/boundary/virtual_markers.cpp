@@ -1,0 +1,74 @@
+#include "engine/boundary/virtual_markers.hpp"
+
+#include "engine/fluid/fluid_interpolation.hpp"
+
+namespace washout {
+
+void mark_active_boundary(const NeighborList& list, const Particles& p,
+                          std::vector<std::uint8_t>& active) {
+  active.assign(p.size(), 0);
+  for (std::size_t i = 0; i < list.size(); ++i)
+    for (std::uint64_t k = list.offset[i]; k < list.offset[i + 1]; ++k)
+      if (list.index[k] >= p.fluid_count) active[list.index[k]] = 1;
+}
+
+void update_marker_velocities(const SphContext& ctx, const NeighborGrid& grid, const Particles& p,
+                              const std::vector<std::uint8_t>& active, FluidWork& work) {
+  const std::size_t n = p.size();
+  for (int a = 0; a < 3; ++a) work.marker_velocity[a].resize(n, 0.0);
+#pragma omp parallel for schedule(dynamic, 256)
+  for (std::size_t w = p.fluid_count; w < n; ++w) {
+    if (!active[w]) continue;
+    double m[3], normal[3], u_wall[3];
+    for (int a = 0; a < 3; ++a) {
+      normal[a] = p.normal[a][w];
+      u_wall[a] = p.velocity[a][w];
+      m[a] = p.position[a][w] + 2.0 * p.wall_distance[w] * normal[a];
+    }
+    double u_m[3] = {0, 0, 0};
+    const double fraction = accumulate_fluid_at(ctx, grid, p, m, [&](std::uint32_t f, double wt) {
+      for (int a = 0; a < ctx.dim; ++a) u_m[a] += wt * p.velocity[a][f];
+    });
+    if (fraction < kDryFluidFraction) {
+      for (int a = 0; a < 3; ++a) work.marker_velocity[a][w] = u_wall[a];
+      continue;
+    }
+    const double inv = ctx.volume / fraction;  // 1 / sum W
+    double rel[3], un = 0.0;
+    for (int a = 0; a < 3; ++a) {
+      rel[a] = u_m[a] * inv - u_wall[a];
+      un += rel[a] * normal[a];
+    }
+    const double tangential_factor = 2.0 * work.wall_slip[w - p.fluid_count] - 1.0;
+    for (int a = 0; a < 3; ++a) {
+      const double normal_part = un * normal[a], tangential_part = rel[a] - normal_part;
+      work.marker_velocity[a][w] = u_wall[a] - normal_part + tangential_factor * tangential_part;
+    }
+  }
+}
+
+void update_wall_pressures(const SphContext& ctx, const NeighborGrid& grid, const Vec3& gravity,
+                           const std::vector<std::uint8_t>& active, Particles& p) {
+  const std::size_t n = p.size();
+#pragma omp parallel for schedule(dynamic, 256)
+  for (std::size_t w = p.fluid_count; w < n; ++w) {
+    if (!active[w]) {
+      p.pressure[w] = 0.0;
+      continue;
+    }
+    double m[3];
+    for (int a = 0; a < 3; ++a) m[a] = p.position[a][w] + 2.0 * p.wall_distance[w] * p.normal[a][w];
+    double P_m = 0.0;
+    const double fraction = accumulate_fluid_at(
+        ctx, grid, p, m, [&](std::uint32_t f, double wt) { P_m += wt * p.pressure[f]; });
+    if (fraction < kDryFluidFraction) {
+      p.pressure[w] = 0.0;
+      continue;
+    }
+    double hydrostatic = 0.0;
+    for (int a = 0; a < ctx.dim; ++a) hydrostatic += gravity[a] * (p.position[a][w] - m[a]);
+    p.pressure[w] = P_m * ctx.volume / fraction + ctx.rho0 * hydrostatic;
+  }
+}
+
+}  // namespace washout

@@ -1,0 +1,29 @@
+#pragma once
+// Shows a run's progress. On a terminal: one line rewritten in place (simulated time / end
+// time, step, dt, pressure-solver iterations and residual, wall time, ETA). Otherwise, or with
+// --quiet: one line per output frame.
+#include <chrono>
+#include <cstdio>
+
+#include "engine/sim/simulation.hpp"
+
+namespace washout::cli {
+
+class ProgressDisplay final : public RunObserver {
+ public:
+  ProgressDisplay(bool live, std::FILE* out) : live_(live), out_(out) {}
+  void on_start(const Simulation& sim) override;
+  bool on_step(const Simulation& sim, const StepReport& report) override;
+  bool on_frame(const Simulation& sim, std::size_t frame) override;
+  void on_finish(const Simulation& sim, const RunSummary& summary) override;
+
+ private:
+  void print_line(const Simulation& sim, const StepReport& r, bool newline);
+  bool live_;
+  std::FILE* out_;
+  std::chrono::steady_clock::time_point start_, last_print_;
+};
+
+void print_summary(std::FILE* out, const Simulation& sim, const RunSummary& summary);
+
+}  // namespace washout::cli

@@ -1,0 +1,155 @@
+#include "engine/cli/run_command.hpp"
+
+#include <omp.h>
+#include <unistd.h>
+
+#include <cstring>
+#include <filesystem>
+#include <vector>
+
+#include "engine/cli/frame_output.hpp"
+#include "engine/cli/progress_display.hpp"
+#include "engine/io/run_file_writer.hpp"
+
+namespace washout::cli {
+namespace {
+
+const char* kRunUsage =
+    "usage: washout run SCENE.lua [--out DIR] [--set NAME=VALUE ...] [--threads N] [--quiet]\n"
+    "       washout run --list-parameters\n"
+    "\n"
+    "Runs a scene and writes one HDF5 file (plus its .xdmf and, if the scene asks, PNG frames)\n"
+    "into DIR (default: runs/<scene name>/).\n"
+    "  --out DIR          output folder, created if missing\n"
+    "  --set NAME=VALUE   override a scene or engine parameter (repeatable), e.g. --set d0=0.005\n"
+    "  --threads N        OpenMP threads (default: the scene's `threads`, else all cores)\n"
+    "  --quiet            one line per output frame instead of a live progress line\n"
+    "  --list-parameters  print every engine parameter with its unit, default and meaning\n"
+    "Exit status: 0 success, 1 wrong scene or input, 2 unstable simulation, 3 output failed.\n";
+
+std::string format_default(const ParameterValue& v) {
+  if (auto d = std::get_if<double>(&v)) {
+    char b[32];
+    std::snprintf(b, sizeof b, "%g", *d);
+    return b;
+  }
+  if (auto s = std::get_if<std::string>(&v)) return "\"" + *s + "\"";
+  const auto& list = std::get<std::vector<double>>(v);
+  std::string o = "{";
+  for (std::size_t k = 0; k < list.size(); ++k) o += (k ? ", " : "") + std::to_string(list[k]);
+  return o + "}";
+}
+
+}  // namespace
+
+RunOutcome run_scene(const RunRequest& request) {
+  RunOutcome outcome;
+  try {
+    lua::LuaScene scene(request.scene_path, request.overrides);
+    Model& model = scene.model();
+    const int threads = request.threads > 0 ? request.threads : model.params.threads;
+    if (threads > 0) omp_set_num_threads(threads);
+    const std::string out_dir = request.out_dir.empty()
+                                    ? (std::filesystem::path("runs") / model.scene_name).string()
+                                    : request.out_dir;
+    std::error_code ec;
+    std::filesystem::create_directories(out_dir, ec);
+    if (ec) {
+      outcome.exit_code = kOutputFailed;
+      outcome.error = "cannot create output folder '" + out_dir + "': " + ec.message();
+      return outcome;
+    }
+    outcome.h5_path = (std::filesystem::path(out_dir) / model.output.file_name).string();
+    const lua::FrameRequest frames = scene.frames();
+    Simulation sim(model);
+    ProgressDisplay progress(request.live_progress, request.log);
+    std::vector<RunObserver*> observers = {&progress};
+    if (auto* callbacks = scene.callbacks()) observers.push_back(callbacks);
+    std::unique_ptr<RunObserver> frame_writer;
+    if (request.render_frames && frames.enabled) {
+      frame_writer = make_frame_output(frames, (std::filesystem::path(out_dir) / "frames").string());
+      observers.push_back(frame_writer.get());
+    }
+    outcome.summary = sim.run(outcome.h5_path, observers);
+    if (outcome.summary.status == RunStatus::Unstable) outcome.exit_code = kUnstable;
+  } catch (const SceneError& e) {
+    outcome.exit_code = kBadInput;
+    std::string where = e.where();
+    const std::string what = e.what();
+    // Lua messages already start with "file:line:"; others get the location prefixed.
+    if (!where.empty() && what.rfind(where, 0) != 0) outcome.error = where + ": " + what;
+    else outcome.error = what;
+    if (!e.parameter().empty() && outcome.error.find(e.parameter()) == std::string::npos)
+      outcome.error += " (parameter '" + e.parameter() + "')";
+  } catch (const io::OutputError& e) {
+    outcome.exit_code = kOutputFailed;
+    outcome.error = e.what();
+  }
+  return outcome;
+}
+
+int run_command(int argc, char** argv) {
+  RunRequest request;
+  bool quiet = false;
+  for (int k = 1; k < argc; ++k) {
+    const std::string arg = argv[k];
+    auto value = [&](const char* option) -> std::string {
+      if (k + 1 >= argc) {
+        std::fprintf(stderr, "washout run: %s needs a value\n%s", option, kRunUsage);
+        std::exit(kBadInput);
+      }
+      return argv[++k];
+    };
+    if (arg == "--help" || arg == "-h") {
+      std::printf("%s", kRunUsage);
+      return kSuccess;
+    } else if (arg == "--list-parameters") {
+      std::printf("| parameter | unit | default | meaning |\n|---|---|---|---|\n");
+      for (const auto& info : ParameterSet::engine_table())
+        std::printf("| `%s` | %s | `%s` | %s |\n", info.name, info.unit,
+                    format_default(info.default_value).c_str(), info.doc);
+      return kSuccess;
+    } else if (arg == "--out") {
+      request.out_dir = value("--out");
+    } else if (arg == "--set") {
+      const std::string kv = value("--set");
+      const auto eq = kv.find('=');
+      if (eq == std::string::npos || eq == 0) {
+        std::fprintf(stderr, "washout run: --set needs NAME=VALUE, got '%s'\n", kv.c_str());
+        return kBadInput;
+      }
+      request.overrides.emplace_back(kv.substr(0, eq), kv.substr(eq + 1));
+    } else if (arg == "--threads") {
+      const std::string v = value("--threads");
+      char* end = nullptr;
+      const long n = std::strtol(v.c_str(), &end, 10);
+      if (*end != '\0' || n < 1) {
+        std::fprintf(stderr, "washout run: --threads needs a positive whole number, got '%s'\n",
+                     v.c_str());
+        return kBadInput;
+      }
+      request.threads = static_cast<int>(n);
+    } else if (arg == "--quiet" || arg == "-q") {
+      quiet = true;
+    } else if (!arg.empty() && arg[0] == '-') {
+      std::fprintf(stderr, "washout run: unknown option '%s'\n%s", arg.c_str(), kRunUsage);
+      return kBadInput;
+    } else if (request.scene_path.empty()) {
+      request.scene_path = arg;
+    } else {
+      std::fprintf(stderr, "washout run: one scene at a time ('%s' and '%s')\n",
+                   request.scene_path.c_str(), arg.c_str());
+      return kBadInput;
+    }
+  }
+  if (request.scene_path.empty()) {
+    std::fprintf(stderr, "washout run: which scene?\n%s", kRunUsage);
+    return kBadInput;
+  }
+  request.live_progress = !quiet && isatty(fileno(stdout));
+  const RunOutcome outcome = run_scene(request);
+  if (!outcome.error.empty()) std::fprintf(stderr, "error: %s\n", outcome.error.c_str());
+  return outcome.exit_code;
+}
+
+}  // namespace washout::cli

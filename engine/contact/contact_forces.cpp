@@ -1,0 +1,337 @@
+#include "engine/contact/contact_forces.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <stdexcept>
+#include <tuple>
+#include <variant>
+
+namespace washout::contact {
+namespace {
+
+using rigid::BodyModel;
+using rigid::BodyState;
+using rigid::MotionKind;
+
+bool is_dynamic(const BodyModel& model) { return model.motion == MotionKind::kDynamic; }
+
+// 1/m_eff of a unit impulse along n at offset r from X: 1/M + (r x n) . I^-1 (r x n).
+// Summed over contacts times their stiffness, this bounds the largest eigenvalue of the body's
+// contact stiffness over its mass matrix (the trace of a positive semidefinite matrix bounds
+// its largest eigenvalue), whatever the number and placement of the touching particles.
+double inverse_effective_mass(const BodyModel& model, const Eigen::Matrix3d& inertia_inverse,
+                              const Vec3& r, const Vec3& n) {
+  const Vec3 arm = r.cross(n);
+  return 1.0 / model.mass + arm.dot(inertia_inverse * arm);
+}
+
+auto spring_key(const PairSpring& s) {
+  return std::tie(s.body_a, s.particle_a, s.body_b, s.particle_b);
+}
+
+void detect_wall_contacts(std::span<const BodyModel> models, std::span<const BodyState> states,
+                          const ContactScene& scene, std::span<const double> reach,
+                          ContactWorkspace& ws) {
+  const int walls = ws.wall_count;
+  const double reference = scene.settings.hertz_reference_overlap;
+  for (int b = 0; b < ws.body_count; ++b) {
+    const BodyModel& model = models[b];
+    if (!is_dynamic(model)) continue;
+    const BodyState& state = states[b];
+    const double r = model.contact_radius;
+    const Eigen::Matrix3d inertia_inverse = rigid::world_inertia_inverse(model, state.orientation);
+    const rigid::Vec3Array& x = ws.position[b];
+    const std::size_t n = x.size();
+    BodyContactSummary& summary = ws.summary[b];
+    for (int w = 0; w < walls; ++w) {
+      const int slot = b * walls + w;
+      rigid::Vec3Array& spring = ws.wall_spring[b];
+      const std::size_t first = static_cast<std::size_t>(w) * n;
+      // The signed distance grows by at most the distance moved, so the whole body is out of
+      // reach when its bounding sphere is.
+      const double centre_distance = signed_distance(scene.walls[w].shape, state.position);
+      if (centre_distance - model.bounding_radius >= reach[b]) {
+        if (ws.wall_spring_used[slot]) {
+          std::fill_n(spring.x.begin() + first, n, 0.0);
+          std::fill_n(spring.y.begin() + first, n, 0.0);
+          std::fill_n(spring.z.begin() + first, n, 0.0);
+          ws.wall_spring_used[slot] = 0;
+        }
+        continue;
+      }
+      const PairLaw& law = ws.wall_law[slot];
+      int touching = 0;
+      std::visit(
+          [&](const auto& shape) {
+            Vec3 normal;
+            for (std::size_t i = 0; i < n; ++i) {
+              const Vec3 xi(x.x[i], x.y[i], x.z[i]);
+              const double gap = shape.distance(xi, normal) - r;
+              const double overlap = -gap;
+              if (overlap <= 0.0) {  // separated: the pair's tangential spring is reset
+                spring.x[first + i] = spring.y[first + i] = spring.z[first + i] = 0.0;
+              }
+              if (gap >= reach[b]) continue;
+              if (model.dim == 2) {
+                normal.z() = 0.0;
+                normal.normalize();
+              }
+              ws.wall_candidates.push_back({b, w, static_cast<std::int32_t>(i), overlap, normal});
+              if (overlap > 0.0) ++touching;
+              summary.frequency2 += step_stiffness(law, overlap, reference * r) *
+                                    inverse_effective_mass(model, inertia_inverse,
+                                                           xi - state.position, normal);
+              ++summary.near;
+            }
+          },
+          scene.walls[w].shape);
+      ws.wall_touching[slot] = touching;
+      summary.touching += touching;
+      if (touching > 0) ws.wall_spring_used[slot] = 1;
+    }
+  }
+}
+
+void detect_body_contacts(std::span<const BodyModel> models, std::span<const BodyState> states,
+                          const ContactScene& scene, std::span<const double> reach,
+                          ContactWorkspace& ws) {
+  const int bodies = ws.body_count;
+  // Bodies that may meet another body before the next detection (bounding spheres).
+  std::vector<std::uint8_t> involved(bodies, 0);
+  bool any = false;
+  double cutoff = 0.0;
+  int dim = 3;
+  for (int a = 0; a < bodies; ++a) {
+    for (int b = a + 1; b < bodies; ++b) {
+      if (!is_dynamic(models[a]) && !is_dynamic(models[b])) continue;
+      const double gap = (states[a].position - states[b].position).norm() -
+                         models[a].bounding_radius - models[b].bounding_radius;
+      if (gap >= reach[a] + reach[b]) continue;
+      involved[a] = involved[b] = 1;
+      any = true;
+      cutoff = std::max(cutoff, models[a].contact_radius + models[b].contact_radius +
+                                    reach[a] + reach[b]);
+      dim = models[a].dim;
+    }
+  }
+  if (!any) return;
+
+  ws.gathered_position.clear();
+  ws.gathered_body.clear();
+  ws.gathered_particle.clear();
+  for (int b = 0; b < bodies; ++b) {
+    if (!involved[b]) continue;
+    const rigid::Vec3Array& x = ws.position[b];
+    for (std::size_t i = 0; i < x.size(); ++i) {
+      ws.gathered_position.push_back(x[i]);
+      ws.gathered_body.push_back(b);
+      ws.gathered_particle.push_back(static_cast<std::int32_t>(i));
+    }
+  }
+  ws.grid.find_pairs(ws.gathered_position, ws.gathered_body, cutoff, dim, ws.pairs);
+
+  const double reference = scene.settings.hertz_reference_overlap;
+  std::vector<Eigen::Matrix3d> inertia_inverse(bodies);
+  for (int b = 0; b < bodies; ++b)
+    if (involved[b]) inertia_inverse[b] = rigid::world_inertia_inverse(models[b],
+                                                                      states[b].orientation);
+  for (const ParticlePair& p : ws.pairs) {
+    int ga = p.i, gb = p.j;
+    if (ws.gathered_body[ga] > ws.gathered_body[gb]) std::swap(ga, gb);
+    const int a = ws.gathered_body[ga], b = ws.gathered_body[gb];
+    const BodyModel& ma = models[a];
+    const BodyModel& mb = models[b];
+    if (!is_dynamic(ma) && !is_dynamic(mb)) continue;
+    const Vec3 xa = ws.gathered_position[ga], xb = ws.gathered_position[gb];
+    Vec3 d = xa - xb;
+    if (dim == 2) d.z() = 0.0;
+    const double distance = d.norm();
+    const double gap = distance - ma.contact_radius - mb.contact_radius;
+    if (gap >= reach[a] + reach[b] || !(distance > 0.0)) continue;
+    const Vec3 normal = d / distance;
+    const double overlap = -gap;
+    ws.pair_candidates.push_back(
+        {a, ws.gathered_particle[ga], b, ws.gathered_particle[gb], overlap, normal});
+    if (overlap > 0.0) {
+      ++ws.pair_touching[a * bodies + b];
+      ++ws.summary[a].touching;
+      ++ws.summary[b].touching;
+    }
+    // Both bodies feel this contact: its stiffness over the pair's relative inverse mass.
+    double inverse_mass = 0.0;
+    if (is_dynamic(ma))
+      inverse_mass += inverse_effective_mass(ma, inertia_inverse[a], xa - states[a].position,
+                                             normal);
+    if (is_dynamic(mb))
+      inverse_mass += inverse_effective_mass(mb, inertia_inverse[b], xb - states[b].position,
+                                             normal);
+    const double f2 =
+        step_stiffness(ws.pair_law[a * bodies + b], overlap, reference * ma.contact_radius) *
+        inverse_mass;
+    ws.summary[a].frequency2 += f2;
+    ws.summary[b].frequency2 += f2;
+    ++ws.summary[a].near;
+    ++ws.summary[b].near;
+  }
+}
+
+}  // namespace
+
+void ContactWorkspace::prepare(std::span<const BodyModel> models, const ContactScene& scene) {
+  const int bodies = static_cast<int>(models.size());
+  const int walls = static_cast<int>(scene.walls.size());
+  if (bodies == body_count && walls == wall_count) return;  // laws and history already there
+  body_count = bodies;
+  wall_count = walls;
+  const MaterialTable& table = scene.materials;
+  wall_law.resize(static_cast<std::size_t>(bodies) * walls);
+  pair_law.resize(static_cast<std::size_t>(bodies) * bodies);
+  for (int b = 0; b < bodies; ++b) {
+    const int mb = models[b].material;
+    for (int w = 0; w < walls; ++w) {
+      const int mw = scene.walls[w].material;
+      wall_law[b * walls + w] =
+          make_pair_law(scene.settings, models[b].contact_radius, table.material(mb),
+                        table.material(mw), table.friction(mb, mw), table.restitution(mb, mw));
+    }
+    for (int c = 0; c < bodies; ++c) {
+      const int mc = models[c].material;
+      // Particles of one radius in practice; with two, the smaller sets the stiffness.
+      const double radius = std::min(models[b].contact_radius, models[c].contact_radius);
+      pair_law[b * bodies + c] =
+          make_pair_law(scene.settings, radius, table.material(mb), table.material(mc),
+                        table.friction(mb, mc), table.restitution(mb, mc));
+    }
+  }
+  position.assign(bodies, {});
+  velocity.assign(bodies, {});
+  wall_spring.assign(bodies, {});
+  for (int b = 0; b < bodies; ++b) {
+    wall_spring[b].resize(models[b].contact_offset.size() * static_cast<std::size_t>(walls));
+    std::fill(wall_spring[b].x.begin(), wall_spring[b].x.end(), 0.0);
+    std::fill(wall_spring[b].y.begin(), wall_spring[b].y.end(), 0.0);
+    std::fill(wall_spring[b].z.begin(), wall_spring[b].z.end(), 0.0);
+  }
+  wall_spring_used.assign(static_cast<std::size_t>(bodies) * walls, 0);
+  pair_spring.clear();
+  next_pair_spring.clear();
+}
+
+void detect_contacts(std::span<const BodyModel> models, std::span<const BodyState> states,
+                     const ContactScene& scene, std::span<const double> reach,
+                     ContactWorkspace& ws) {
+  if (ws.body_count != static_cast<int>(models.size()) ||
+      ws.wall_count != static_cast<int>(scene.walls.size()))
+    throw std::logic_error("detect_contacts: ContactWorkspace::prepare was not called");
+  const int bodies = ws.body_count;
+  ws.wall_candidates.clear();
+  ws.pair_candidates.clear();
+  ws.wall_touching.assign(static_cast<std::size_t>(bodies) * ws.wall_count, 0);
+  ws.pair_touching.assign(static_cast<std::size_t>(bodies) * bodies, 0);
+  ws.summary.assign(bodies, {});
+  for (int b = 0; b < bodies; ++b) {
+    rigid::particle_positions(states[b], models[b].contact_offset, ws.position[b]);
+    rigid::particle_velocities(states[b], models[b].contact_offset, ws.velocity[b]);
+  }
+  detect_wall_contacts(models, states, scene, reach, ws);
+  detect_body_contacts(models, states, scene, reach, ws);
+}
+
+void contact_loads(std::span<const BodyModel> models, std::span<const BodyState> states,
+                   const ContactScene& scene, double h, ContactWorkspace& ws,
+                   std::vector<rigid::BodyLoad>& loads) {
+  const int bodies = ws.body_count;
+  const int walls = ws.wall_count;
+  const bool shared = scene.settings.damping_mass == DampingMass::kShared;
+  loads.assign(bodies, {});
+
+  // Normal speeds, and the contacts that act during this step (touching now, or starting
+  // within it) per body and partner: they share the body's mass for the dashpot.
+  auto wall_rate = [&](const WallCandidate& c) {
+    return -ws.velocity[c.body][c.particle].dot(c.normal);
+  };
+  auto pair_relative = [&](const PairCandidate& c) {
+    return Vec3(ws.velocity[c.body_a][c.particle_a] - ws.velocity[c.body_b][c.particle_b]);
+  };
+  std::fill(ws.wall_touching.begin(), ws.wall_touching.end(), 0);
+  std::fill(ws.pair_touching.begin(), ws.pair_touching.end(), 0);
+  for (const WallCandidate& c : ws.wall_candidates)
+    if (touches_during_step(c.overlap, wall_rate(c), h)) ++ws.wall_touching[c.body * walls + c.wall];
+  for (const PairCandidate& c : ws.pair_candidates)
+    if (touches_during_step(c.overlap, -pair_relative(c).dot(c.normal), h))
+      ++ws.pair_touching[c.body_a * bodies + c.body_b];
+
+  for (const WallCandidate& c : ws.wall_candidates) {
+    const double rate = wall_rate(c);
+    if (!touches_during_step(c.overlap, rate, h)) continue;
+    const BodyModel& model = models[c.body];
+    const int slot = c.body * walls + c.wall;
+    const rigid::Vec3Array& x = ws.position[c.body];
+    const Vec3 ui = ws.velocity[c.body][c.particle];
+    ContactKinematics k;
+    k.overlap = c.overlap;
+    k.overlap_rate = rate;
+    k.normal = c.normal;
+    k.tangential_velocity = ui + rate * c.normal;
+    k.damping_mass = shared ? model.mass / ws.wall_touching[slot] : model.mass;
+    rigid::Vec3Array& springs = ws.wall_spring[c.body];
+    const std::size_t s = static_cast<std::size_t>(c.wall) * x.size() + c.particle;
+    Vec3 spring = springs[s];
+    const Vec3 force = spring_dashpot_force(ws.wall_law[slot], k, h, spring);
+    springs.set(s, spring);
+    ws.wall_spring_used[slot] = 1;
+    // Applied at the contact point, the middle of the overlap (METHOD.md's r_i x F_c,i with
+    // r_i taken to the contact rather than the particle centre: same for the normal force,
+    // the friction torque gets the arm of the real surface).
+    const Vec3 point = x[c.particle] - (model.contact_radius - 0.5 * c.overlap) * c.normal;
+    rigid::BodyLoad& load = loads[c.body];
+    load.force += force;
+    load.torque += (point - states[c.body].position).cross(force);
+  }
+
+  ws.next_pair_spring.clear();
+  for (const PairCandidate& c : ws.pair_candidates) {
+    const Vec3 relative = pair_relative(c);
+    const double rate = -relative.dot(c.normal);
+    if (!touches_during_step(c.overlap, rate, h)) continue;
+    const BodyModel& ma = models[c.body_a];
+    const BodyModel& mb = models[c.body_b];
+    const Vec3 xb = ws.position[c.body_b][c.particle_b];
+    // Reduced mass of the pair; a fixed or prescribed body counts as infinitely heavy.
+    double reduced = is_dynamic(ma) && is_dynamic(mb) ? ma.mass * mb.mass / (ma.mass + mb.mass)
+                                                      : (is_dynamic(ma) ? ma.mass : mb.mass);
+    if (shared) reduced /= ws.pair_touching[c.body_a * bodies + c.body_b];
+    ContactKinematics k;
+    k.overlap = c.overlap;
+    k.overlap_rate = rate;
+    k.normal = c.normal;
+    k.tangential_velocity = relative + rate * c.normal;
+    k.damping_mass = reduced;
+    PairSpring key{c.body_a, c.particle_a, c.body_b, c.particle_b, Vec3::Zero()};
+    auto it = std::lower_bound(
+        ws.pair_spring.begin(), ws.pair_spring.end(), key,
+        [](const PairSpring& l, const PairSpring& r) { return spring_key(l) < spring_key(r); });
+    if (it != ws.pair_spring.end() && spring_key(*it) == spring_key(key)) key.spring = it->spring;
+    const Vec3 force =
+        spring_dashpot_force(ws.pair_law[c.body_a * bodies + c.body_b], k, h, key.spring);
+    if (c.overlap + h * rate > 0.0) ws.next_pair_spring.push_back(key);  // still touching
+    // Both bodies take the force at one contact point, so that the pair's torques about any
+    // point cancel and the total angular momentum is conserved.
+    const Vec3 point = xb + (mb.contact_radius - 0.5 * c.overlap) * c.normal;
+    loads[c.body_a].force += force;
+    loads[c.body_a].torque += (point - states[c.body_a].position).cross(force);
+    loads[c.body_b].force -= force;
+    loads[c.body_b].torque -= (point - states[c.body_b].position).cross(force);
+  }
+  std::sort(ws.next_pair_spring.begin(), ws.next_pair_spring.end(),
+            [](const PairSpring& l, const PairSpring& r) { return spring_key(l) < spring_key(r); });
+  ws.pair_spring.swap(ws.next_pair_spring);
+
+  for (int b = 0; b < bodies; ++b) {
+    if (models[b].dim != 2) continue;
+    loads[b].force.z() = 0.0;
+    loads[b].torque.x() = loads[b].torque.y() = 0.0;
+  }
+}
+
+}  // namespace washout::contact

@@ -1,0 +1,103 @@
+#include "engine/core/neighbor_grid.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+#include <stdexcept>
+#include <string>
+
+namespace washout {
+
+long NeighborGrid::cell_coordinate(double x, int axis) const {
+  long c = static_cast<long>(std::floor((x - origin_[axis]) / cell_size_[axis]));
+  if (periodic_.periodic[axis]) return (c % cells_[axis] + cells_[axis]) % cells_[axis];
+  return std::clamp(c, 0L, cells_[axis] - 1);
+}
+
+std::size_t NeighborGrid::cell_index(const long c[3]) const {
+  return static_cast<std::size_t>(c[0]) +
+         static_cast<std::size_t>(cells_[0]) *
+             (static_cast<std::size_t>(c[1]) + static_cast<std::size_t>(cells_[1]) * c[2]);
+}
+
+void NeighborGrid::build(const Particles& particles, double cell_size, const PeriodicBox& periodic) {
+  dim_ = particles.dim;
+  periodic_ = periodic;
+  const std::size_t n = particles.size();
+  for (int a = 0; a < 3; ++a) {
+    cells_[a] = 1;
+    origin_[a] = 0.0;
+    cell_size_[a] = cell_size;
+    if (a >= dim_) continue;
+    if (periodic.periodic[a]) {
+      cells_[a] = static_cast<long>(std::floor(periodic.length[a] / cell_size));
+      if (cells_[a] < 3)
+        throw std::invalid_argument("periodic length along axis " + std::to_string(a) +
+                                    " must be at least three kernel supports (3 x 2h)");
+      cell_size_[a] = periodic.length[a] / cells_[a];
+      origin_[a] = periodic.lower[a];
+      continue;
+    }
+    double lo = std::numeric_limits<double>::max(), hi = std::numeric_limits<double>::lowest();
+    const double* x = particles.position[a].data();
+#pragma omp parallel for reduction(min : lo) reduction(max : hi)
+    for (std::size_t i = 0; i < n; ++i) {
+      lo = std::min(lo, x[i]);
+      hi = std::max(hi, x[i]);
+    }
+    if (n == 0) lo = hi = 0.0;
+    origin_[a] = lo - 0.5 * cell_size;
+    cells_[a] = static_cast<long>(std::floor((hi - origin_[a]) / cell_size)) + 2;
+  }
+  const std::size_t cell_count =
+      static_cast<std::size_t>(cells_[0]) * static_cast<std::size_t>(cells_[1]) * cells_[2];
+  if (cell_count > (std::size_t{1} << 31))
+    throw std::runtime_error("neighbour grid too large: particles spread far beyond the domain");
+
+  cell_of_.resize(n);
+#pragma omp parallel for
+  for (std::size_t i = 0; i < n; ++i) {
+    long c[3] = {0, 0, 0};
+    for (int a = 0; a < dim_; ++a) c[a] = cell_coordinate(particles.position[a][i], a);
+    cell_of_[i] = static_cast<std::uint32_t>(cell_index(c));
+  }
+  // Counting sort by cell: particles of one cell are contiguous in sorted_.
+  cell_start_.assign(cell_count + 1, 0);
+  for (std::size_t i = 0; i < n; ++i) ++cell_start_[cell_of_[i] + 1];
+  for (std::size_t c = 0; c < cell_count; ++c) cell_start_[c + 1] += cell_start_[c];
+  sorted_.resize(n);
+  std::vector<std::uint32_t> fill(cell_start_.begin(), cell_start_.end() - 1);
+  for (std::size_t i = 0; i < n; ++i) sorted_[fill[cell_of_[i]]++] = static_cast<std::uint32_t>(i);
+}
+
+void NeighborGrid::build_list(const Particles& particles, std::size_t query_count, double radius,
+                              NeighborList& list) const {
+  const double r2max = radius * radius;
+  const auto& X = particles.position;
+  auto for_each_neighbor = [&](std::size_t i, auto&& f) {
+    const double p[3] = {X[0][i], X[1][i], X[2][i]};
+    for_each_candidate(p, [&](std::uint32_t j) {
+      if (j == i) return;
+      double d[3] = {p[0] - X[0][j], p[1] - X[1][j], p[2] - X[2][j]};
+      periodic_.minimum_image(d);
+      if (d[0] * d[0] + d[1] * d[1] + d[2] * d[2] < r2max) f(j);
+    });
+  };
+  // Two passes (count, then fill) keep the list contiguous and the build parallel.
+  list.offset.assign(query_count + 1, 0);
+#pragma omp parallel for schedule(dynamic, 256)
+  for (std::size_t i = 0; i < query_count; ++i) {
+    std::uint64_t count = 0;
+    for_each_neighbor(i, [&](std::uint32_t) { ++count; });
+    list.offset[i + 1] = count;
+  }
+  for (std::size_t i = 0; i < query_count; ++i) list.offset[i + 1] += list.offset[i];
+  list.index.resize(list.offset[query_count]);
+#pragma omp parallel for schedule(dynamic, 256)
+  for (std::size_t i = 0; i < query_count; ++i) {
+    std::uint64_t k = list.offset[i];
+    for_each_neighbor(i, [&](std::uint32_t j) { list.index[k++] = j; });
+  }
+}
+
+}  // namespace washout

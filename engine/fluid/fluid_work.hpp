@@ -1,0 +1,22 @@
+#pragma once
+// Per-step work arrays of the projection method (cleared and refilled each step).
+#include <array>
+#include <cstdint>
+#include <vector>
+
+#include "engine/solvers/sparse_matrix.hpp"
+
+namespace washout {
+
+struct FluidWork {
+  std::array<std::vector<double>, 3> u_star;           // predicted velocity u* (fluid)
+  std::array<std::vector<double>, 3> marker_velocity;  // virtual-marker velocity (boundary)
+  std::vector<std::uint8_t> free_surface;              // 1: P = 0 (fluid)
+  std::vector<double> eddy_viscosity;                  // nu_t (fluid; empty without turbulence)
+  std::vector<double> wall_slip;                       // slip ratio per boundary particle
+  std::vector<std::int32_t> unknown;                   // PPE row of a fluid particle, or -1
+  CsrMatrix matrix;
+  std::vector<double> rhs, solution;
+};
+
+}  // namespace washout

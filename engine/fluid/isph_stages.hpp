@@ -1,0 +1,70 @@
+#pragma once
+// The stages of one stabilized-ISPH step (METHOD.md "One time step"), one function per
+// equation, each implemented in the file named after it. The Simulation composes them.
+#include <cstddef>
+
+#include "engine/core/neighbor_grid.hpp"
+#include "engine/fluid/fluid_work.hpp"
+#include "engine/fluid/sph_context.hpp"
+
+namespace washout {
+
+// <rho>_i = sum_j m_j W_ij over fluid and boundary neighbours, scaled so that a full-support
+// lattice gives rho0 (summation_density.cpp).
+void compute_summation_density(const SphContext& ctx, const NeighborList& list, Particles& p);
+
+// Free surface: <rho>_i < threshold * rho0 takes P = 0. Returns the count (free_surface.cpp).
+std::size_t detect_free_surface(const Particles& p, double rho0, double threshold,
+                                FluidWork& work);
+
+// Smagorinsky sub-particle-scale eddy viscosity nu_t = (C_s d0)^2 |S| (turbulence_smagorinsky.cpp).
+void compute_eddy_viscosity(const SphContext& ctx, const NeighborList& list, const Particles& p,
+                            double smagorinsky_constant, FluidWork& work);
+
+// Step 1, predictor: u* = u + dt (nu <lap u> + (1/rho0) <div tau> + g) (predictor.cpp).
+void predict_velocity(const SphContext& ctx, const NeighborList& list, const Particles& p,
+                      double viscosity, const Vec3& gravity, double dt, FluidWork& work);
+
+struct PpeStatistics {
+  std::size_t unknowns = 0;
+  std::size_t nonzeros = 0;
+  std::size_t pinned_components = 0;  // closed fluid regions whose pressure level was fixed
+};
+
+// Step 2, the stabilized PPE (pressure_poisson.cpp):
+//   <lap P>_i = (rho0/dt) <div u*>_i + alpha (rho0 - <rho>_i) / dt^2,  P = 0 on the free surface,
+// walls by the Neumann condition through virtual pressures P_w = P_i + g_iw.
+PpeStatistics assemble_pressure_poisson(const SphContext& ctx, const NeighborList& list,
+                                        const Particles& p, const Vec3& gravity, double alpha,
+                                        double dt, FluidWork& work);
+// Copies the solution back to the fluid particles' pressure (P = 0 on the free surface).
+void scatter_pressure(const FluidWork& work, Particles& p);
+// Initial guess for an iterative solve: the previous pressure of each unknown.
+void gather_pressure_guess(const Particles& p, FluidWork& work);
+
+// The virtual pressure of boundary particle w as seen by fluid particle i, P_w = P_i + g_iw:
+//   normal to the wall, the Neumann condition of the projection, dP/dn = (rho0/dt)(u*_i - u_w).n,
+//   which makes the corrected velocity follow the wall; along the wall, the hydrostatic
+//   variation rho0 g_t, so that a particle beside a vertical wall keeps its full pressure support
+//   (the wall's tangential share of <grad P> would otherwise be missing).
+inline double wall_pressure_jump(const SphContext& ctx, const Particles& p, const FluidWork& work,
+                                 const Vec3& gravity, std::size_t i, std::size_t w,
+                                 const double d_iw[3], double dt) {
+  double un = 0.0, rn = 0.0, gr = 0.0, gn = 0.0;
+  for (int a = 0; a < ctx.dim; ++a) {
+    const double n = p.normal[a][w], r = -d_iw[a];  // r = x_w - x_i
+    un += (work.u_star[a][i] - p.velocity[a][w]) * n;
+    rn += r * n;
+    gr += gravity[a] * r;
+    gn += gravity[a] * n;
+  }
+  return ctx.rho0 * (un / dt * rn + (gr - gn * rn));
+}
+
+// Step 3, corrector: u^{n+1} = u* - (dt/rho0) <grad P>; step 4: x^{n+1} = x^n + dt u^{n+1}
+// (corrector.cpp). Returns the largest fluid speed after the update.
+double correct_and_advect(const SphContext& ctx, const NeighborList& list, Particles& p,
+                          const FluidWork& work, const Vec3& gravity, double dt,
+                          bool symmetric_gradient);
+
+}  // namespace washout

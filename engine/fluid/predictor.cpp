@@ -1,0 +1,42 @@
+// Step 1 of METHOD.md, the predictor: u*_i = u_i + dt (nu <lap u>_i + (1/rho0) <div tau>_i + g).
+// The laplacian is METHOD.md's
+//   <lap f>_i = sum_j V_j 2 (r_ij . grad W_ij) / (|r_ij|^2 + eta^2) (f_i - f_j),
+// normalised on the lattice. Boundary neighbours contribute their virtual-marker velocity, which
+// carries the slip condition. The sub-particle-scale stress enters as an eddy viscosity:
+// (1/rho0) div tau = div (2 nu_t S) ~ nu_t,ij <lap u> with nu_t,ij the pair average.
+#include "engine/fluid/isph_stages.hpp"
+
+namespace washout {
+
+void predict_velocity(const SphContext& ctx, const NeighborList& list, const Particles& p,
+                      double viscosity, const Vec3& gravity, double dt, FluidWork& work) {
+  const std::size_t n = p.fluid_count;
+  for (int a = 0; a < 3; ++a) work.u_star[a].resize(n);
+  const bool turbulent = !work.eddy_viscosity.empty();
+  const double lap_scale = 2.0 * ctx.laplacian_correction * ctx.volume;
+#pragma omp parallel for schedule(static)
+  for (std::size_t i = 0; i < n; ++i) {
+    double lap[3] = {0, 0, 0};
+    const double nu_t_i = turbulent ? work.eddy_viscosity[i] : 0.0;
+    for (std::uint64_t k = list.offset[i]; k < list.offset[i + 1]; ++k) {
+      const std::size_t j = list.index[k];
+      double d[3];
+      ctx.displacement(p, i, j, d);
+      const double r2 = d[0] * d[0] + d[1] * d[1] + d[2] * d[2];
+      const double r = std::sqrt(r2);
+      // lap_scale * (r . grad W) / (r^2 + eta^2) with r . grad W = W'(r) r
+      double weight = lap_scale * ctx.kernel.derivative(r) * r / (r2 + ctx.eta2);
+      const bool fluid = j < n;
+      if (turbulent) weight *= viscosity + 0.5 * (nu_t_i + (fluid ? work.eddy_viscosity[j] : nu_t_i));
+      else weight *= viscosity;
+      for (int a = 0; a < ctx.dim; ++a) {
+        const double uj = fluid ? p.velocity[a][j] : work.marker_velocity[a][j];
+        lap[a] += weight * (p.velocity[a][i] - uj);
+      }
+    }
+    for (int a = 0; a < 3; ++a)
+      work.u_star[a][i] = a < ctx.dim ? p.velocity[a][i] + dt * (lap[a] + gravity[a]) : 0.0;
+  }
+}
+
+}  // namespace washout

@@ -1,0 +1,34 @@
+#include "engine/fluid/sph_context.hpp"
+
+namespace washout {
+
+SphContext::SphContext(int dim_, double d0_, double h_over_d0, double rho0_,
+                       const PeriodicBox& periodic_)
+    : dim(dim_),
+      d0(d0_),
+      h(h_over_d0 * d0_),
+      rho0(rho0_),
+      volume(std::pow(d0_, dim_)),
+      mass(rho0_ * std::pow(d0_, dim_)),
+      eta2(1e-4 * h * h),
+      kernel(dim_, h_over_d0 * d0_),
+      periodic(periodic_) {
+  const int reach = static_cast<int>(std::ceil(2.0 * h / d0)) + 1;
+  double density = mass * kernel.value(0.0), gradient_sum = 0.0, laplacian_sum = 0.0;
+  for (int k = (dim == 3 ? -reach : 0); k <= (dim == 3 ? reach : 0); ++k)
+    for (int j = -reach; j <= reach; ++j)
+      for (int i = -reach; i <= reach; ++i) {
+        if (i == 0 && j == 0 && k == 0) continue;
+        const double r = d0 * std::sqrt(double(i * i + j * j + k * k));
+        if (r >= 2.0 * h) continue;
+        density += mass * kernel.value(r);
+        const double minus_r_dot_grad = -kernel.derivative(r) * r;  // -(r . grad W) >= 0
+        gradient_sum += volume * minus_r_dot_grad;
+        laplacian_sum += volume * minus_r_dot_grad * r * r / (r * r + eta2);
+      }
+  full_support_density = density;
+  gradient_correction = dim / gradient_sum;
+  laplacian_correction = dim / laplacian_sum;
+}
+
+}  // namespace washout

@@ -1,0 +1,39 @@
+#pragma once
+// What every SPH stage needs to know and that is fixed for a run: the kernel, particle mass
+// and volume, and the lattice normalisation of the operators.
+#include <cmath>
+
+#include "engine/core/cubic_spline_kernel.hpp"
+#include "engine/core/particles.hpp"
+#include "engine/core/periodic_box.hpp"
+
+namespace washout {
+
+struct SphContext {
+  int dim = 2;
+  double d0 = 0.0, h = 0.0;
+  double rho0 = 1000.0;
+  double volume = 0.0;  // V = d0^dim, equal for all particles (keeps the PPE symmetric)
+  double mass = 0.0;    // m = rho0 V
+  double eta2 = 0.0;    // eta^2 = 1e-4 h^2 in the laplacian's denominator
+  CubicSplineKernel kernel{2, 1.0};
+  PeriodicBox periodic;
+  // Kernel sums over a perfect lattice with full support. Dividing by them makes the operators
+  // exact on the initial lattice: the summation density of an interior particle equals rho0, the
+  // gradient of a linear field and the laplacian of a quadratic field are exact there.
+  double full_support_density = 0.0;  // sum_j m W_ij including j = i
+  double gradient_correction = 1.0;
+  double laplacian_correction = 1.0;
+
+  SphContext(int dim, double d0, double h_over_d0, double rho0, const PeriodicBox& periodic);
+
+  // x_i - x_j with the periodic minimum image.
+  void displacement(const Particles& p, std::size_t i, std::size_t j, double d[3]) const {
+    d[0] = p.position[0][i] - p.position[0][j];
+    d[1] = p.position[1][i] - p.position[1][j];
+    d[2] = p.position[2][i] - p.position[2][j];
+    if (periodic.any()) periodic.minimum_image(d);
+  }
+};
+
+}  // namespace washout

@@ -1,0 +1,162 @@
+#include "engine/io/run_file_reader.hpp"
+
+#include <hdf5.h>
+
+#include <algorithm>
+#include <filesystem>
+
+namespace washout::io {
+namespace {
+
+herr_t collect_name(hid_t, const char* name, const H5L_info_t*, void* data) {
+  static_cast<std::vector<std::string>*>(data)->push_back(name);
+  return 0;
+}
+
+bool exists(hid_t file, const std::string& path) {
+  // H5Lexists needs every intermediate link to exist: check each prefix.
+  std::size_t pos = 0;
+  while ((pos = path.find('/', pos + 1)) != std::string::npos)
+    if (H5Lexists(file, path.substr(0, pos).c_str(), H5P_DEFAULT) <= 0) return false;
+  return H5Lexists(file, path.c_str(), H5P_DEFAULT) > 0;
+}
+
+template <class T>
+std::vector<T> read_all(hid_t file, const std::string& path, hid_t type, const std::string& fname) {
+  hid_t set = H5Dopen2(file, path.c_str(), H5P_DEFAULT);
+  if (set < 0) throw RunFileError(fname + ": no dataset " + path);
+  hid_t space = H5Dget_space(set);
+  const hssize_t n = H5Sget_simple_extent_npoints(space);
+  std::vector<T> data(static_cast<std::size_t>(std::max<hssize_t>(n, 0)));
+  herr_t status = n > 0 ? H5Dread(set, type, H5S_ALL, H5S_ALL, H5P_DEFAULT, data.data()) : 0;
+  H5Sclose(space);
+  H5Dclose(set);
+  if (status < 0) throw RunFileError(fname + ": cannot read " + path);
+  return data;
+}
+
+double read_double_attribute(hid_t object, const char* name, const std::string& where) {
+  if (H5Aexists(object, name) <= 0) throw RunFileError(where + ": missing attribute " + name);
+  hid_t attr = H5Aopen(object, name, H5P_DEFAULT);
+  double v = 0;
+  H5Aread(attr, H5T_NATIVE_DOUBLE, &v);
+  H5Aclose(attr);
+  return v;
+}
+
+}  // namespace
+
+ParticleView FrameData::view() const {
+  ParticleView v;
+  v.dim = dim;
+  v.count = count;
+  v.time = time;
+  v.d0 = d0;
+  for (int a = 0; a < dim; ++a) {
+    v.position.component[a] = position.data() + a;
+    if (!velocity.empty()) v.velocity.component[a] = velocity.data() + a;
+  }
+  v.position.stride = v.velocity.stride = static_cast<std::size_t>(dim);
+  v.pressure = pressure.empty() ? nullptr : pressure.data();
+  v.kind = kind.empty() ? nullptr : kind.data();
+  v.body = body.empty() ? nullptr : body.data();
+  return v;
+}
+
+RunFileReader::RunFileReader(const std::string& path) : path_(path) {
+  H5Eset_auto2(H5E_DEFAULT, nullptr, nullptr);
+  if (!std::filesystem::exists(path) || H5Fis_hdf5(path.c_str()) <= 0)
+    throw RunFileError("cannot open run file '" + path + "' (missing or not HDF5)");
+  file_ = H5Fopen(path.c_str(), H5F_ACC_RDONLY, H5P_DEFAULT);
+  if (file_ < 0) throw RunFileError("cannot open run file '" + path + "'");
+  dim_ = static_cast<int>(read_double_attribute(file_, "dim", path));
+  d0_ = read_double_attribute(file_, "d0", path);
+  if (exists(file_, "/frames")) {
+    hid_t frames = H5Gopen2(file_, "/frames", H5P_DEFAULT);
+    H5Literate(frames, H5_INDEX_NAME, H5_ITER_INC, nullptr, collect_name, &frame_names_);
+    H5Gclose(frames);
+    std::sort(frame_names_.begin(), frame_names_.end());
+  }
+}
+
+RunFileReader::~RunFileReader() {
+  if (file_ >= 0) H5Fclose(file_);
+}
+
+std::vector<double> RunFileReader::frame_times() const {
+  std::vector<double> t;
+  for (const auto& name : frame_names_) {
+    hid_t g = H5Gopen2(file_, ("/frames/" + name).c_str(), H5P_DEFAULT);
+    t.push_back(read_double_attribute(g, "time", path_ + ":/frames/" + name));
+    H5Gclose(g);
+  }
+  return t;
+}
+
+FrameData RunFileReader::read_frame(std::size_t index) const {
+  if (index >= frame_names_.size())
+    throw RunFileError(path_ + ": frame " + std::to_string(index) + " out of range (the file has " +
+                       std::to_string(frame_names_.size()) + " frames)");
+  const std::string base = "/frames/" + frame_names_[index];
+  FrameData f;
+  f.dim = dim_;
+  f.d0 = d0_;
+  hid_t g = H5Gopen2(file_, base.c_str(), H5P_DEFAULT);
+  f.time = read_double_attribute(g, "time", path_ + ":" + base);
+  f.step = static_cast<std::int64_t>(read_double_attribute(g, "step", path_ + ":" + base));
+  H5Gclose(g);
+  f.position = read_all<double>(file_, base + "/position", H5T_NATIVE_DOUBLE, path_);
+  f.count = f.position.size() / dim_;
+  if (exists(file_, base + "/velocity"))
+    f.velocity = read_all<double>(file_, base + "/velocity", H5T_NATIVE_DOUBLE, path_);
+  if (exists(file_, base + "/pressure"))
+    f.pressure = read_all<double>(file_, base + "/pressure", H5T_NATIVE_DOUBLE, path_);
+  f.kind = read_all<std::uint8_t>(file_, base + "/kind", H5T_NATIVE_UINT8, path_);
+  if (exists(file_, base + "/id"))
+    f.id = read_all<std::uint64_t>(file_, base + "/id", H5T_NATIVE_UINT64, path_);
+  if (exists(file_, base + "/body"))
+    f.body = read_all<std::int32_t>(file_, base + "/body", H5T_NATIVE_INT32, path_);
+  return f;
+}
+
+bool RunFileReader::has(const std::string& object_path) const { return exists(file_, object_path); }
+
+std::string RunFileReader::string_attribute(const std::string& name) const {
+  if (H5Aexists(file_, name.c_str()) <= 0) throw RunFileError(path_ + ": missing attribute " + name);
+  hid_t attr = H5Aopen(file_, name.c_str(), H5P_DEFAULT);
+  hid_t type = H5Aget_type(attr);
+  const std::size_t size = H5Tget_size(type);
+  std::string value(size, '\0');
+  hid_t memory_type = H5Tcopy(H5T_C_S1);
+  H5Tset_size(memory_type, size);
+  H5Tset_strpad(memory_type, H5T_STR_NULLPAD);
+  H5Aread(attr, memory_type, value.data());
+  H5Tclose(memory_type);
+  H5Tclose(type);
+  H5Aclose(attr);
+  while (!value.empty() && value.back() == '\0') value.pop_back();
+  return value;
+}
+
+double RunFileReader::double_attribute(const std::string& name) const {
+  return read_double_attribute(file_, name.c_str(), path_);
+}
+
+std::vector<double> RunFileReader::read_doubles(const std::string& dataset_path) const {
+  if (!exists(file_, dataset_path)) throw RunFileError(path_ + ": no dataset " + dataset_path);
+  return read_all<double>(file_, dataset_path, H5T_NATIVE_DOUBLE, path_);
+}
+
+std::vector<std::size_t> RunFileReader::shape(const std::string& dataset_path) const {
+  if (!exists(file_, dataset_path)) throw RunFileError(path_ + ": no dataset " + dataset_path);
+  hid_t set = H5Dopen2(file_, dataset_path.c_str(), H5P_DEFAULT);
+  hid_t space = H5Dget_space(set);
+  const int rank = H5Sget_simple_extent_ndims(space);
+  std::vector<hsize_t> dims(static_cast<std::size_t>(std::max(rank, 0)));
+  H5Sget_simple_extent_dims(space, dims.data(), nullptr);
+  H5Sclose(space);
+  H5Dclose(set);
+  return {dims.begin(), dims.end()};
+}
+
+}  // namespace washout::io

@@ -1,0 +1,257 @@
+#include "engine/io/run_file_writer.hpp"
+
+#include <hdf5.h>
+
+#include <cstdio>
+#include <filesystem>
+#include <fstream>
+#include <sstream>
+
+namespace washout::io {
+namespace {
+
+void check(herr_t status, const std::string& what) {
+  if (status < 0) throw OutputError("HDF5: could not " + what);
+}
+
+void write_attribute(hid_t object, const std::string& name, hid_t type, const void* value) {
+  hid_t space = H5Screate(H5S_SCALAR);
+  hid_t attr = H5Acreate2(object, name.c_str(), type, space, H5P_DEFAULT, H5P_DEFAULT);
+  check(attr, "create attribute " + name);
+  check(H5Awrite(attr, type, value), "write attribute " + name);
+  H5Aclose(attr);
+  H5Sclose(space);
+}
+
+void write_string_attribute(hid_t object, const std::string& name, const std::string& value) {
+  hid_t type = H5Tcopy(H5T_C_S1);
+  H5Tset_size(type, value.empty() ? 1 : value.size());
+  H5Tset_strpad(type, H5T_STR_NULLPAD);
+  H5Tset_cset(type, H5T_CSET_UTF8);
+  if (H5Aexists(object, name.c_str()) > 0) H5Adelete(object, name.c_str());
+  hid_t space = H5Screate(H5S_SCALAR);
+  hid_t attr = H5Acreate2(object, name.c_str(), type, space, H5P_DEFAULT, H5P_DEFAULT);
+  check(attr, "create attribute " + name);
+  check(H5Awrite(attr, type, value.empty() ? "" : value.data()), "write attribute " + name);
+  H5Aclose(attr);
+  H5Sclose(space);
+  H5Tclose(type);
+}
+
+template <class T>
+void write_dataset(hid_t group, const std::string& name, hid_t type, const std::vector<T>& data,
+                   std::size_t rows, std::size_t columns) {
+  hsize_t dims[2] = {rows, columns};
+  hid_t space = H5Screate_simple(columns > 1 ? 2 : 1, dims, nullptr);
+  hid_t set = H5Dcreate2(group, name.c_str(), type, space, H5P_DEFAULT, H5P_DEFAULT, H5P_DEFAULT);
+  check(set, "create dataset " + name);
+  if (rows > 0) check(H5Dwrite(set, type, H5S_ALL, H5S_ALL, H5P_DEFAULT, data.data()), "write " + name);
+  H5Dclose(set);
+  H5Sclose(space);
+}
+
+}  // namespace
+
+RunFileWriter::RunFileWriter(const std::string& path, const RunHeader& header)
+    : path_(path), dim_(header.dim) {
+  H5Eset_auto2(H5E_DEFAULT, nullptr, nullptr);  // we report errors ourselves
+  std::error_code ec;
+  const auto parent = std::filesystem::path(path).parent_path();
+  if (!parent.empty()) std::filesystem::create_directories(parent, ec);
+  file_ = H5Fcreate(path.c_str(), H5F_ACC_TRUNC, H5P_DEFAULT, H5P_DEFAULT);
+  if (file_ < 0) throw OutputError("cannot create output file '" + path + "'");
+  write_string_attribute(file_, "washout_version", WASHOUT_VERSION);
+  write_string_attribute(file_, "scene_name", header.scene_name);
+  write_string_attribute(file_, "scene_source", header.scene_source);
+  write_string_attribute(file_, "parameters", header.parameters_json);
+  const std::int32_t dim = header.dim;
+  write_attribute(file_, "dim", H5T_NATIVE_INT32, &dim);
+  write_attribute(file_, "d0", H5T_NATIVE_DOUBLE, &header.d0);
+  write_attribute(file_, "h", H5T_NATIVE_DOUBLE, &header.h);
+  write_attribute(file_, "dt", H5T_NATIVE_DOUBLE, &header.dt);
+  H5Gclose(ensure_group("/frames"));
+  flush();
+}
+
+RunFileWriter::~RunFileWriter() {
+  if (file_ >= 0) {
+    H5Fflush(file_, H5F_SCOPE_GLOBAL);
+    H5Fclose(file_);
+  }
+}
+
+long long RunFileWriter::ensure_group(const std::string& path) {
+  // Creates every missing group along the path and returns the last one (caller closes it).
+  std::string partial;
+  std::stringstream in(path);
+  std::string piece;
+  hid_t group = H5Gopen2(file_, "/", H5P_DEFAULT);
+  while (std::getline(in, piece, '/')) {
+    if (piece.empty()) continue;
+    partial += "/" + piece;
+    hid_t next = H5Lexists(file_, partial.c_str(), H5P_DEFAULT) > 0
+                     ? H5Gopen2(file_, partial.c_str(), H5P_DEFAULT)
+                     : H5Gcreate2(file_, partial.c_str(), H5P_DEFAULT, H5P_DEFAULT, H5P_DEFAULT);
+    H5Gclose(group);
+    if (next < 0) throw OutputError("HDF5: cannot create group " + partial + " in " + path_);
+    group = next;
+  }
+  return group;
+}
+
+void RunFileWriter::write_frame(const ParticleView& view, std::int64_t step,
+                                const std::vector<std::string>& fields) {
+  char name[32];
+  std::snprintf(name, sizeof name, "/frames/%06zu", frames_.size());
+  hid_t group = ensure_group(name);
+  write_attribute(group, "time", H5T_NATIVE_DOUBLE, &view.time);
+  write_attribute(group, "step", H5T_NATIVE_INT64, &step);
+  const std::size_t n = view.count;
+  auto wants = [&](const char* f) {
+    for (const auto& x : fields)
+      if (x == f) return true;
+    return false;
+  };
+  auto vector_block = [&](const VectorView& v) {
+    std::vector<double> block(n * dim_);
+    for (std::size_t i = 0; i < n; ++i)
+      for (int a = 0; a < dim_; ++a) block[i * dim_ + a] = v(i, a);
+    return block;
+  };
+  write_dataset(group, "position", H5T_NATIVE_DOUBLE, vector_block(view.position), n, dim_);
+  const bool velocity = wants("velocity") && view.velocity.component[0];
+  const bool pressure = wants("pressure") && view.pressure;
+  if (velocity)
+    write_dataset(group, "velocity", H5T_NATIVE_DOUBLE, vector_block(view.velocity), n, dim_);
+  if (pressure)
+    write_dataset(group, "pressure", H5T_NATIVE_DOUBLE,
+                  std::vector<double>(view.pressure, view.pressure + n), n, 1);
+  if (view.kind)  // kind is always written: readers need it to tell fluid from walls
+    write_dataset(group, "kind", H5T_NATIVE_UINT8,
+                  std::vector<std::uint8_t>(view.kind, view.kind + n), n, 1);
+  if (wants("id")) {
+    std::vector<std::uint64_t> ids(n);
+    for (std::size_t i = 0; i < n; ++i) ids[i] = i;
+    write_dataset(group, "id", H5T_NATIVE_UINT64, ids, n, 1);
+  }
+  if (wants("body")) {
+    std::vector<std::int32_t> body(n, -1);
+    if (view.body) body.assign(view.body, view.body + n);
+    write_dataset(group, "body", H5T_NATIVE_INT32, body, n, 1);
+  }
+  H5Gclose(group);
+  frames_.push_back({std::string(name).substr(8), view.time, n, velocity, pressure});
+  write_xdmf();
+  flush();
+}
+
+namespace {
+template <class T>
+void append_rows(hid_t file, long long group_id, const std::string& name, hid_t type,
+                 const T* rows, std::size_t row_count, std::size_t columns) {
+  const int rank = columns > 1 ? 2 : 1;
+  hid_t set;
+  hsize_t old_rows = 0;
+  if (H5Lexists(group_id, name.c_str(), H5P_DEFAULT) > 0) {
+    set = H5Dopen2(group_id, name.c_str(), H5P_DEFAULT);
+    hid_t space = H5Dget_space(set);
+    hsize_t dims[2] = {0, 0};
+    H5Sget_simple_extent_dims(space, dims, nullptr);
+    H5Sclose(space);
+    old_rows = dims[0];
+  } else {
+    hsize_t dims[2] = {0, columns}, max[2] = {H5S_UNLIMITED, columns}, chunk[2] = {256, columns};
+    hid_t space = H5Screate_simple(rank, dims, max);
+    hid_t props = H5Pcreate(H5P_DATASET_CREATE);
+    H5Pset_chunk(props, rank, chunk);
+    set = H5Dcreate2(group_id, name.c_str(), type, space, H5P_DEFAULT, props, H5P_DEFAULT);
+    H5Pclose(props);
+    H5Sclose(space);
+  }
+  check(set, "create or open dataset " + name);
+  (void)file;
+  if (row_count > 0) {
+    hsize_t new_dims[2] = {old_rows + row_count, columns};
+    check(H5Dset_extent(set, new_dims), "extend dataset " + name);
+    hid_t file_space = H5Dget_space(set);
+    hsize_t start[2] = {old_rows, 0}, count[2] = {row_count, columns};
+    H5Sselect_hyperslab(file_space, H5S_SELECT_SET, start, nullptr, count, nullptr);
+    hid_t memory_space = H5Screate_simple(rank, count, nullptr);
+    check(H5Dwrite(set, type, memory_space, file_space, H5P_DEFAULT, rows), "append to " + name);
+    H5Sclose(memory_space);
+    H5Sclose(file_space);
+  }
+  H5Dclose(set);
+}
+
+std::pair<std::string, std::string> split_path(const std::string& dataset) {
+  const auto slash = dataset.find_last_of('/');
+  return {dataset.substr(0, slash), dataset.substr(slash + 1)};
+}
+}  // namespace
+
+void RunFileWriter::append(const std::string& dataset, const double* rows, std::size_t row_count,
+                           std::size_t columns) {
+  const auto [group_path, name] = split_path(dataset);
+  hid_t group = ensure_group(group_path);
+  append_rows(file_, group, name, H5T_NATIVE_DOUBLE, rows, row_count, columns);
+  H5Gclose(group);
+}
+
+void RunFileWriter::append(const std::string& dataset, const std::int64_t* rows,
+                           std::size_t row_count, std::size_t columns) {
+  const auto [group_path, name] = split_path(dataset);
+  hid_t group = ensure_group(group_path);
+  append_rows(file_, group, name, H5T_NATIVE_INT64, rows, row_count, columns);
+  H5Gclose(group);
+}
+
+void RunFileWriter::set_string_attribute(const std::string& object, const std::string& name,
+                                         const std::string& value) {
+  hid_t group = ensure_group(object);
+  write_string_attribute(group, name, value);
+  H5Gclose(group);
+}
+
+void RunFileWriter::flush() {
+  if (H5Fflush(file_, H5F_SCOPE_GLOBAL) < 0) throw OutputError("cannot flush " + path_);
+}
+
+void RunFileWriter::write_xdmf() const {
+  const std::string xdmf_path = std::filesystem::path(path_).replace_extension(".xdmf").string();
+  const std::string h5_name = std::filesystem::path(path_).filename().string();
+  std::ofstream out(xdmf_path + ".tmp");
+  out << "<?xml version=\"1.0\" ?>\n<Xdmf Version=\"3.0\">\n <Domain>\n"
+      << "  <Grid Name=\"particles\" GridType=\"Collection\" CollectionType=\"Temporal\">\n";
+  const char* geometry = dim_ == 2 ? "XY" : "XYZ";
+  for (const auto& f : frames_) {
+    const std::string base = h5_name + ":/frames/" + f.name + "/";
+    out << "   <Grid Name=\"frame" << f.name << "\" GridType=\"Uniform\">\n"
+        << "    <Time Value=\"" << f.time << "\"/>\n"
+        << "    <Topology TopologyType=\"Polyvertex\" NumberOfElements=\"" << f.count << "\"/>\n"
+        << "    <Geometry GeometryType=\"" << geometry << "\">\n"
+        << "     <DataItem Dimensions=\"" << f.count << " " << dim_
+        << "\" NumberType=\"Float\" Precision=\"8\" Format=\"HDF\">" << base << "position</DataItem>\n"
+        << "    </Geometry>\n";
+    if (f.has_velocity)
+      out << "    <Attribute Name=\"velocity\" AttributeType=\"Vector\" Center=\"Node\">\n"
+          << "     <DataItem Dimensions=\"" << f.count << " " << dim_
+          << "\" NumberType=\"Float\" Precision=\"8\" Format=\"HDF\">" << base
+          << "velocity</DataItem>\n    </Attribute>\n";
+    if (f.has_pressure)
+      out << "    <Attribute Name=\"pressure\" AttributeType=\"Scalar\" Center=\"Node\">\n"
+          << "     <DataItem Dimensions=\"" << f.count
+          << "\" NumberType=\"Float\" Precision=\"8\" Format=\"HDF\">" << base
+          << "pressure</DataItem>\n    </Attribute>\n";
+    out << "    <Attribute Name=\"kind\" AttributeType=\"Scalar\" Center=\"Node\">\n"
+        << "     <DataItem Dimensions=\"" << f.count
+        << "\" NumberType=\"UChar\" Precision=\"1\" Format=\"HDF\">" << base
+        << "kind</DataItem>\n    </Attribute>\n   </Grid>\n";
+  }
+  out << "  </Grid>\n </Domain>\n</Xdmf>\n";
+  out.close();
+  std::error_code ec;
+  std::filesystem::rename(xdmf_path + ".tmp", xdmf_path, ec);
+}
+
+}  // namespace washout::io

@@ -1,0 +1,315 @@
+#include "engine/model/parameters.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <iomanip>
+#include <sstream>
+
+namespace washout {
+namespace {
+
+using Vec = std::vector<double>;
+
+std::size_t edit_distance(const std::string& a, const std::string& b) {
+  std::vector<std::size_t> row(b.size() + 1);
+  for (std::size_t j = 0; j <= b.size(); ++j) row[j] = j;
+  for (std::size_t i = 1; i <= a.size(); ++i) {
+    std::size_t diag = row[0];
+    row[0] = i;
+    for (std::size_t j = 1; j <= b.size(); ++j) {
+      const std::size_t up = row[j];
+      row[j] = std::min({row[j] + 1, row[j - 1] + 1, diag + (a[i - 1] == b[j - 1] ? 0 : 1)});
+      diag = up;
+    }
+  }
+  return row[b.size()];
+}
+
+const char* type_name(const ParameterValue& v) {
+  if (std::holds_alternative<double>(v)) return "a number";
+  if (std::holds_alternative<std::string>(v)) return "a string";
+  return "a list of numbers";
+}
+
+std::string json_escape(const std::string& s) {
+  std::string o;
+  for (char c : s) {
+    if (c == '"' || c == '\\') o += '\\';
+    if (c == '\n') {
+      o += "\\n";
+      continue;
+    }
+    o += c;
+  }
+  return o;
+}
+
+}  // namespace
+
+const std::vector<ParameterInfo>& ParameterSet::engine_table() {
+  static const std::vector<ParameterInfo> table = {
+      {"dim", "-", "space dimension, 2 or 3", 2.0},
+      {"d0", "m", "initial particle spacing", 0.01},
+      {"h_over_d0", "-", "smoothing length h as a multiple of d0 (kernel support 2h)", 1.2},
+      {"rho0", "kg/m^3", "reference density of the fluid", 1000.0},
+      {"viscosity", "m^2/s", "kinematic viscosity nu", 1.0e-6},
+      {"gravity", "m/s^2", "gravity vector; empty = {0,-9.81} in 2D, {0,0,-9.81} in 3D", Vec{}},
+      {"alpha", "-",
+       "relaxation of the density-invariance term in the PPE (0 divergence-free, 1 "
+       "density-invariant); calibrated by the hydrostatic test, see docs/method.md",
+       0.05},
+      {"free_surface_threshold", "-",
+       "a particle whose density is below this fraction of the full-support density is on the "
+       "free surface and takes P = 0",
+       0.95},
+      {"dt", "s", "fixed time step; 0 = adaptive (cfl, viscous_number, dt_max)", 0.0},
+      {"cfl", "-", "Courant number for the adaptive step: dt <= cfl h / max|u|", 0.2},
+      {"viscous_number", "-", "viscous limit of the adaptive step: dt <= viscous_number h^2 / nu",
+       0.125},
+      {"dt_max", "s", "largest adaptive step", 1.0e-3},
+      {"dt_min", "s", "an adaptive step below this stops the run as unstable", 1.0e-7},
+      {"end_time", "s", "simulated time at which the run ends", 1.0},
+      {"wall_slip", "-", "default wall slip ratio: 0 no-slip, 1 free-slip (paper: 0.65)", 0.65},
+      {"wall_layers", "-", "wall particle layers; 0 = enough to fill the kernel support", 0.0},
+      {"turbulence", "-", "\"none\" or \"smagorinsky\" (sub-particle-scale eddy viscosity)",
+       std::string("none")},
+      {"smagorinsky_constant", "-", "C_s of the Smagorinsky model (nu_t = (C_s d0)^2 |S|)", 0.12},
+      {"solver", "-",
+       "pressure solver: \"cholmod\" (direct), \"pcg\" (Jacobi-preconditioned CG, warm-started), "
+       "\"auto\" (cholmod up to 60000 unknowns in 2D, pcg otherwise)",
+       std::string("auto")},
+      {"solver_tolerance", "-", "relative residual |b - Ax| / |b| at which pcg stops", 1.0e-8},
+      {"solver_max_iterations", "-", "pcg iteration limit; reaching it stops the run", 5000.0},
+      {"pressure_gradient", "-",
+       "corrector gradient: \"symmetric\" (momentum-conserving) or \"difference\"",
+       std::string("symmetric")},
+      {"output_interval", "s", "simulated time between output frames", 0.05},
+      {"max_speed", "m/s", "a faster particle stops the run as unstable; 0 = 10 sqrt(2 g L)", 0.0},
+      {"periodic", "-", "periodic axes, e.g. \"x\" (needs domain_min and domain_max)",
+       std::string("")},
+      {"domain_min", "m", "lower corner of the domain; particles leaving it stop the run; "
+                          "empty = bounding box of the scene plus a margin", Vec{}},
+      {"domain_max", "m", "upper corner of the domain", Vec{}},
+      {"threads", "-", "OpenMP threads; 0 = all cores (the CLI's --threads wins)", 0.0},
+  };
+  return table;
+}
+
+ParameterSet::ParameterSet() {
+  for (const auto& info : engine_table()) values_[info.name] = info.default_value;
+}
+
+void ParameterSet::set(const std::string& name, const ParameterValue& value) {
+  auto it = values_.find(name);
+  if (it == values_.end()) {
+    const std::string near = nearest_name(name);
+    throw ParameterError(name, "unknown parameter '" + name + "'" +
+                                   (near.empty() ? "" : " (did you mean '" + near + "'?)"));
+  }
+  ParameterValue v = value;
+  // A single number is accepted where a list is expected and vice versa for one-element lists.
+  if (std::holds_alternative<std::vector<double>>(it->second) && std::holds_alternative<double>(v))
+    v = std::vector<double>{std::get<double>(v)};
+  if (v.index() != it->second.index())
+    throw ParameterError(name, "parameter '" + name + "' must be " + type_name(it->second) +
+                                   ", not " + type_name(value));
+  it->second = v;
+}
+
+void ParameterSet::set_from_text(const std::string& name, const std::string& text) {
+  if (!has(name)) set(name, text);  // throws the unknown-name error with a suggestion
+  const ParameterValue& current = values_.at(name);
+  try {
+    if (std::holds_alternative<double>(current)) {
+      std::size_t used = 0;
+      const double v = std::stod(text, &used);
+      if (used != text.size()) throw std::invalid_argument(text);
+      set(name, v);
+    } else if (std::holds_alternative<std::string>(current)) {
+      set(name, text);
+    } else {
+      std::string t = text;
+      for (char& c : t)
+        if (c == '{' || c == '}' || c == ',' || c == '[' || c == ']') c = ' ';
+      std::istringstream in(t);
+      std::vector<double> v;
+      double x;
+      while (in >> x) v.push_back(x);
+      if (!in.eof()) throw std::invalid_argument(text);
+      set(name, v);
+    }
+  } catch (const std::invalid_argument&) {
+    throw ParameterError(name, "cannot read '" + text + "' as " + type_name(current) +
+                                   " for parameter '" + name + "'");
+  } catch (const std::out_of_range&) {
+    throw ParameterError(name, "value '" + text + "' out of range for parameter '" + name + "'");
+  }
+}
+
+void ParameterSet::declare(const std::string& name, const ParameterValue& value) {
+  if (values_.count(name) && !scene_names_.count(name))
+    throw ParameterError(name, "scene parameter '" + name +
+                                   "' has the name of an engine parameter; choose another name");
+  values_[name] = value;
+  scene_names_.insert(name);
+}
+
+const ParameterValue& ParameterSet::get(const std::string& name) const {
+  auto it = values_.find(name);
+  if (it == values_.end()) throw ParameterError(name, "unknown parameter '" + name + "'");
+  return it->second;
+}
+
+double ParameterSet::number(const std::string& name) const {
+  const auto& v = get(name);
+  if (!std::holds_alternative<double>(v))
+    throw ParameterError(name, "parameter '" + name + "' must be a number");
+  return std::get<double>(v);
+}
+
+std::string ParameterSet::text(const std::string& name) const {
+  const auto& v = get(name);
+  if (!std::holds_alternative<std::string>(v))
+    throw ParameterError(name, "parameter '" + name + "' must be a string");
+  return std::get<std::string>(v);
+}
+
+std::vector<double> ParameterSet::vector(const std::string& name) const {
+  const auto& v = get(name);
+  if (!std::holds_alternative<std::vector<double>>(v))
+    throw ParameterError(name, "parameter '" + name + "' must be a list of numbers");
+  return std::get<std::vector<double>>(v);
+}
+
+std::string ParameterSet::nearest_name(const std::string& name) const {
+  std::string best;
+  std::size_t best_distance = std::max<std::size_t>(3, name.size() / 3) + 1;
+  for (const auto& [candidate, value] : values_) {
+    const std::size_t d = edit_distance(name, candidate);
+    if (d < best_distance) best_distance = d, best = candidate;
+  }
+  return best;
+}
+
+std::vector<std::string> ParameterSet::names() const {
+  std::vector<std::string> n;
+  for (const auto& kv : values_) n.push_back(kv.first);
+  return n;
+}
+
+std::string ParameterSet::to_json() const {
+  std::ostringstream o;
+  o << std::setprecision(17) << "{";
+  bool first = true;
+  for (const auto& [name, value] : values_) {
+    o << (first ? "" : ", ") << "\"" << json_escape(name) << "\": ";
+    first = false;
+    if (auto d = std::get_if<double>(&value)) {
+      if (std::isfinite(*d)) o << *d; else o << "null";
+    } else if (auto s = std::get_if<std::string>(&value)) {
+      o << "\"" << json_escape(*s) << "\"";
+    } else {
+      const auto& v = std::get<std::vector<double>>(value);
+      o << "[";
+      for (std::size_t k = 0; k < v.size(); ++k) o << (k ? ", " : "") << v[k];
+      o << "]";
+    }
+  }
+  o << "}";
+  return o.str();
+}
+
+SimulationParameters SimulationParameters::from(const ParameterSet& set) {
+  SimulationParameters p;
+  auto positive = [&](const char* name) {
+    const double v = set.number(name);
+    if (!(v > 0) || !std::isfinite(v))
+      throw ParameterError(name, std::string("parameter '") + name + "' must be positive, got " +
+                                     std::to_string(v));
+    return v;
+  };
+  auto non_negative = [&](const char* name) {
+    const double v = set.number(name);
+    if (!(v >= 0) || !std::isfinite(v))
+      throw ParameterError(name, std::string("parameter '") + name +
+                                     "' must be zero or positive, got " + std::to_string(v));
+    return v;
+  };
+  auto in_unit_interval = [&](const char* name) {
+    const double v = set.number(name);
+    if (!(v >= 0 && v <= 1))
+      throw ParameterError(name, std::string("parameter '") + name +
+                                     "' must lie in [0, 1], got " + std::to_string(v));
+    return v;
+  };
+  auto integer = [&](const char* name, double v) {
+    if (v != std::floor(v))
+      throw ParameterError(name, std::string("parameter '") + name + "' must be a whole number");
+    return static_cast<int>(v);
+  };
+  auto one_of = [&](const char* name, std::initializer_list<const char*> allowed) {
+    const std::string v = set.text(name);
+    std::string list;
+    for (const char* a : allowed) {
+      if (v == a) return v;
+      list += std::string(list.empty() ? "" : ", ") + "\"" + a + "\"";
+    }
+    throw ParameterError(name, std::string("parameter '") + name + "' must be one of " + list +
+                                   ", got \"" + v + "\"");
+  };
+
+  p.dim = integer("dim", set.number("dim"));
+  if (p.dim != 2 && p.dim != 3) throw ParameterError("dim", "parameter 'dim' must be 2 or 3");
+  p.d0 = positive("d0");
+  p.h_over_d0 = positive("h_over_d0");
+  if (p.h_over_d0 < 0.9 || p.h_over_d0 > 2.5)
+    throw ParameterError("h_over_d0", "parameter 'h_over_d0' must lie in [0.9, 2.5]");
+  p.rho0 = positive("rho0");
+  p.viscosity = non_negative("viscosity");
+  const auto g = set.vector("gravity");
+  if (g.empty()) {
+    p.gravity = p.dim == 2 ? Vec3(0, -9.81, 0) : Vec3(0, 0, -9.81);
+  } else {
+    if (static_cast<int>(g.size()) != p.dim)
+      throw ParameterError("gravity", "parameter 'gravity' needs " + std::to_string(p.dim) +
+                                          " components in " + std::to_string(p.dim) + "D");
+    p.gravity = Vec3(g[0], g[1], p.dim == 3 ? g[2] : 0.0);
+  }
+  p.alpha = non_negative("alpha");
+  if (p.alpha > 1) throw ParameterError("alpha", "parameter 'alpha' must lie in [0, 1]");
+  p.free_surface_threshold = in_unit_interval("free_surface_threshold");
+  p.dt = non_negative("dt");
+  p.cfl = positive("cfl");
+  p.viscous_number = positive("viscous_number");
+  p.dt_max = positive("dt_max");
+  p.dt_min = positive("dt_min");
+  p.end_time = positive("end_time");
+  p.wall_slip = in_unit_interval("wall_slip");
+  p.wall_layers = integer("wall_layers", non_negative("wall_layers"));
+  p.turbulence = one_of("turbulence", {"none", "smagorinsky"});
+  p.smagorinsky_constant = non_negative("smagorinsky_constant");
+  p.solver = one_of("solver", {"auto", "cholmod", "pcg"});
+  p.solver_tolerance = positive("solver_tolerance");
+  p.solver_max_iterations = integer("solver_max_iterations", positive("solver_max_iterations"));
+  p.pressure_gradient = one_of("pressure_gradient", {"symmetric", "difference"});
+  p.output_interval = positive("output_interval");
+  p.max_speed = non_negative("max_speed");
+  p.periodic = set.text("periodic");
+  for (char c : p.periodic)
+    if (c != 'x' && c != 'y' && c != 'z')
+      throw ParameterError("periodic", "parameter 'periodic' lists axes among x, y, z");
+  p.domain_min = set.vector("domain_min");
+  p.domain_max = set.vector("domain_max");
+  for (const auto* name : {"domain_min", "domain_max"}) {
+    const auto& v = std::string(name) == "domain_min" ? p.domain_min : p.domain_max;
+    if (!v.empty() && static_cast<int>(v.size()) != p.dim)
+      throw ParameterError(name, std::string("parameter '") + name + "' needs " +
+                                     std::to_string(p.dim) + " components");
+  }
+  if (!p.periodic.empty() && (p.domain_min.empty() || p.domain_max.empty()))
+    throw ParameterError("periodic", "periodic axes need domain_min and domain_max");
+  p.threads = integer("threads", non_negative("threads"));
+  return p;
+}
+
+}  // namespace washout

@@ -1,0 +1,98 @@
+#pragma once
+// Every parameter a scene can set, with its unit, documented default and meaning (the table in
+// parameters.cpp is the single source; docs/parameters.md is generated from it by
+// `washout run --list-parameters`). Scenes may also declare parameters of their own; all are
+// overridable from the shell with --set NAME=VALUE.
+#include <map>
+#include <set>
+#include <stdexcept>
+#include <string>
+#include <variant>
+#include <vector>
+
+#include "engine/core/vec3.hpp"
+
+namespace washout {
+
+using ParameterValue = std::variant<double, std::string, std::vector<double>>;
+
+struct ParameterInfo {
+  const char* name;
+  const char* unit;
+  const char* doc;
+  ParameterValue default_value;
+};
+
+// A parameter that is missing, misspelt or out of range. `name` is the parameter's name.
+class ParameterError : public std::runtime_error {
+ public:
+  ParameterError(std::string name, const std::string& message)
+      : std::runtime_error(message), name_(std::move(name)) {}
+  const std::string& name() const { return name_; }
+
+ private:
+  std::string name_;
+};
+
+class ParameterSet {
+ public:
+  static const std::vector<ParameterInfo>& engine_table();
+
+  ParameterSet();  // engine defaults
+  bool has(const std::string& name) const { return values_.count(name) != 0; }
+  bool is_scene_parameter(const std::string& name) const { return scene_names_.count(name) != 0; }
+  // Sets a known parameter; throws ParameterError for unknown names (suggesting the nearest) or
+  // a value of the wrong type.
+  void set(const std::string& name, const ParameterValue& value);
+  // Parses a shell value ("0.3", "{0,-9.81}", "pcg") to the parameter's type, then sets it.
+  void set_from_text(const std::string& name, const std::string& text);
+  // Declares a scene-specific parameter with its default.
+  void declare(const std::string& name, const ParameterValue& value);
+  const ParameterValue& get(const std::string& name) const;
+  double number(const std::string& name) const;
+  std::string text(const std::string& name) const;
+  std::vector<double> vector(const std::string& name) const;
+  std::string nearest_name(const std::string& name) const;
+  std::vector<std::string> names() const;
+  std::string to_json() const;
+
+ private:
+  std::map<std::string, ParameterValue> values_;
+  std::set<std::string> scene_names_;
+};
+
+// The engine's parameters, typed and checked for physical sense.
+struct SimulationParameters {
+  int dim = 2;
+  double d0 = 0.01;
+  double h_over_d0 = 1.2;
+  double rho0 = 1000.0;
+  double viscosity = 1e-6;  // kinematic, m^2/s
+  Vec3 gravity = Vec3(0, -9.81, 0);
+  double alpha = 0.05;
+  double free_surface_threshold = 0.95;
+  double dt = 0.0;  // 0: adaptive
+  double cfl = 0.2;
+  double viscous_number = 0.125;
+  double dt_max = 1e-3;
+  double dt_min = 1e-7;
+  double end_time = 1.0;
+  double wall_slip = 0.65;
+  int wall_layers = 0;  // 0: enough to fill the kernel support
+  std::string turbulence = "none";
+  double smagorinsky_constant = 0.12;
+  std::string solver = "auto";
+  double solver_tolerance = 1e-8;
+  int solver_max_iterations = 5000;
+  std::string pressure_gradient = "symmetric";
+  double output_interval = 0.05;
+  double max_speed = 0.0;  // 0: automatic from gravity and domain size
+  std::string periodic;    // axes, e.g. "x"
+  std::vector<double> domain_min, domain_max;
+  int threads = 0;
+
+  double h() const { return h_over_d0 * d0; }
+  static SimulationParameters from(const ParameterSet& set);
+};
+
+}  // namespace washout

@@ -1,0 +1,96 @@
+#include "engine/sim/particle_builder.hpp"
+
+#include <cmath>
+#include <sstream>
+#include <unordered_set>
+
+#include "engine/geometry/lattice_fill.hpp"
+#include "engine/sim/simulation.hpp"
+
+namespace washout {
+namespace {
+
+// Integer lattice coordinates packed in one key, to keep particles of different shapes apart.
+std::uint64_t lattice_key(const Vec3& x, double d0) {
+  auto c = [&](double v) {
+    return static_cast<std::uint64_t>(static_cast<std::int64_t>(std::floor(v / d0)) + (1 << 20)) &
+           0x1FFFFF;
+  };
+  return c(x[0]) | (c(x[1]) << 21) | (c(x[2]) << 42);
+}
+
+std::string format_length(double v) {
+  std::ostringstream o;
+  o << v << " m";
+  return o.str();
+}
+
+}  // namespace
+
+BuiltParticles build_particles(const Model& model) {
+  const auto& prm = model.params;
+  const int dim = prm.dim;
+  const double d0 = prm.d0;
+  const int layers =
+      prm.wall_layers > 0 ? prm.wall_layers : static_cast<int>(std::ceil(2.0 * prm.h() / d0 - 1e-9));
+  BuiltParticles out;
+  out.particles.dim = dim;
+  if (model.fluids.empty())
+    throw SceneError("the scene defines no fluid (add washout.fluid{...})", model.scene_path);
+
+  std::unordered_set<std::uint64_t> occupied;
+  auto near_wall = [&](const Vec3& x) {
+    for (const auto& wall : model.walls)
+      if (wall.shape.signed_distance(x, dim) < 0.5 * d0 - 1e-9 * d0) return true;
+    return false;
+  };
+  for (const auto& region : model.fluids) {
+    std::size_t added = 0, inside_walls = 0;
+    const auto points = lattice_points_inside(region.shape, dim, d0);
+    for (const auto& x : points) {
+      if (near_wall(x)) {
+        ++inside_walls;
+        continue;
+      }
+      if (!occupied.insert(lattice_key(x, d0)).second) continue;
+      out.particles.add(ParticleKind::Fluid, x, region.velocity, -1);
+      ++added;
+    }
+    if (added == 0) {
+      std::string why = points.empty()
+                            ? "it is smaller than the particle spacing d0 = " + format_length(d0)
+                            : "all of its " + std::to_string(points.size()) +
+                                  " lattice points lie inside or against walls";
+      throw SceneError("fluid region " + region.shape.describe() + " holds no particle: " + why,
+                       region.where, "d0");
+    }
+  }
+
+  for (std::size_t w = 0; w < model.walls.size(); ++w) {
+    const auto& wall = model.walls[w];
+    const auto points = lattice_points_inside(wall.shape, dim, d0, layers * d0);
+    if (points.empty())
+      throw SceneError("wall '" + wall.name + "' " + wall.shape.describe() +
+                           " holds no particle: it is thinner than d0 = " + format_length(d0),
+                       wall.where, "d0");
+    MovingWall moving;
+    moving.wall_index = w;
+    moving.motion = wall.motion;
+    const auto kind = wall.moving() ? ParticleKind::MovingWall : ParticleKind::FixedWall;
+    for (const auto& x : points) {
+      if (!occupied.insert(lattice_key(x, d0)).second) continue;
+      const Vec3 n = wall.shape.normal(x, dim, 0.25 * d0);
+      const double depth = -wall.shape.signed_distance(x, dim);
+      if (wall.moving()) {
+        moving.particles.push_back(static_cast<std::uint32_t>(out.particles.size()));
+        moving.reference.push_back(x);
+      }
+      out.particles.add(kind, x, Vec3::Zero(), static_cast<std::int32_t>(w), n, depth);
+      out.wall_slip.push_back(wall.slip);
+    }
+    if (wall.moving()) out.moving_walls.push_back(std::move(moving));
+  }
+  return out;
+}
+
+}  // namespace washout

@@ -1,0 +1,138 @@
+// The run: steps to end_time, writes a frame every output_interval (frame 0 is t = 0), buffers
+// the per-step series and appends them to the file at each frame, and turns a blow-up into a
+// message that says what blew up, when, and which frame is the last good one.
+#include <chrono>
+#include <sstream>
+
+#include "engine/io/run_file_writer.hpp"
+#include "engine/fluid/isph_stages.hpp"
+#include "engine/sim/simulation.hpp"
+
+namespace washout {
+
+void Simulation::write_frame(io::RunFileWriter& writer) {
+  update_boundary_pressures();
+  writer.write_frame(view(), step_, model_.output.fields);
+}
+
+void Simulation::flush_series(io::RunFileWriter& writer) {
+  const std::size_t rows = series_time_.size();
+  if (rows == 0) return;
+  writer.append("/stats/time", series_time_.data(), rows);
+  writer.append("/stats/step", series_step_.data(), rows);
+  writer.append("/stats/dt", series_dt_.data(), rows);
+  writer.append("/stats/ppe_iterations", series_iterations_.data(), rows);
+  writer.append("/stats/ppe_residual", series_residual_.data(), rows);
+  writer.append("/stats/wall_seconds", series_wall_.data(), rows);
+  writer.append("/stats/kinetic_energy", series_energy_.data(), rows);
+  writer.append("/stats/substeps", series_substeps_.data(), rows);
+  const std::size_t probes = model_.probes.size();
+  for (std::size_t k = 0; k < probes; ++k) {
+    std::vector<double> values(rows);
+    for (std::size_t r = 0; r < rows; ++r) values[r] = probe_series_[r * probes + k];
+    writer.append("/probes/" + model_.probes[k].name + "/time", series_time_.data(), rows);
+    writer.append("/probes/" + model_.probes[k].name + "/value", values.data(), rows);
+  }
+  for (auto* v : {&series_time_, &series_dt_, &series_residual_, &series_wall_, &series_energy_})
+    v->clear();
+  for (auto* v : {&series_step_, &series_iterations_, &series_substeps_}) v->clear();
+  probe_series_.clear();
+  writer.flush();
+}
+
+RunSummary Simulation::run(const std::string& output_path,
+                           const std::vector<RunObserver*>& observers) {
+  const auto& prm = model_.params;
+  const auto start = std::chrono::steady_clock::now();
+  RunSummary summary;
+  summary.output_path = output_path;
+  summary.fluid_particles = particles_.fluid_count;
+  summary.boundary_particles = particles_.size() - particles_.fluid_count;
+
+  std::unique_ptr<io::RunFileWriter> writer;
+  if (!output_path.empty()) {
+    io::RunHeader header{model_.scene_name, model_.scene_source,
+                         model_.parameter_set.to_json(), prm.dim, prm.d0, ctx_.h, prm.dt};
+    writer = std::make_unique<io::RunFileWriter>(output_path, header);
+  }
+  // The state at t = 0: densities and probes, then frame 0.
+  grid_.build(particles_, 2.0 * ctx_.h, ctx_.periodic);
+  grid_.build_list(particles_, particles_.fluid_count, 2.0 * ctx_.h, neighbors_);
+  compute_summation_density(ctx_, neighbors_, particles_);
+  if (!model_.probes.empty()) evaluate_probes();
+  std::size_t frame = 0;
+  auto emit_frame = [&]() {
+    auto s = timer_.measure("output");
+    if (writer) {
+      flush_series(*writer);
+      write_frame(*writer);
+    }
+    summary.last_frame_time = time_;
+    ++frame;
+  };
+  emit_frame();
+  bool keep_going = true;
+  for (auto* o : observers) o->on_start(*this);
+  for (auto* o : observers) keep_going = o->on_frame(*this, 0) && keep_going;
+  RunObserver* stopper = nullptr;
+  if (!keep_going)
+    for (auto* o : observers) stopper = o;
+
+  double next_frame = prm.output_interval;
+  const double tolerance = 1e-9 * prm.output_interval;
+  while (keep_going && time_ < prm.end_time - tolerance) {
+    StepReport report;
+    try {
+      report = step_until(std::min(next_frame, prm.end_time));
+    } catch (const UnstableError& e) {
+      std::ostringstream m;
+      m << "unstable at t = " << time_ << " s (step " << step_ + 1 << "): " << e.what() << ". ";
+      if (writer) {
+        flush_series(*writer);
+        m << "The last good state is frame " << frame - 1 << " (t = " << summary.last_frame_time
+          << " s) in " << output_path << ".";
+      }
+      summary.status = RunStatus::Unstable;
+      summary.message = m.str();
+      break;
+    }
+    series_time_.push_back(report.time);
+    series_step_.push_back(report.step);
+    series_dt_.push_back(report.dt);
+    series_iterations_.push_back(report.ppe_iterations);
+    series_residual_.push_back(report.ppe_residual);
+    series_wall_.push_back(report.wall_seconds);
+    series_energy_.push_back(report.kinetic_energy);
+    series_substeps_.push_back(report.substeps);
+    probe_series_.insert(probe_series_.end(), probe_values_.begin(), probe_values_.end());
+    {
+      auto s = timer_.measure("callbacks");
+      for (auto* o : observers)
+        if (!o->on_step(*this, report)) keep_going = false, stopper = o;
+    }
+    const bool at_frame = time_ >= next_frame - tolerance || time_ >= prm.end_time - tolerance;
+    if (at_frame || !keep_going) {
+      emit_frame();
+      while (next_frame <= time_ + tolerance) next_frame += prm.output_interval;
+      auto s = timer_.measure("callbacks");
+      for (auto* o : observers)
+        if (!o->on_frame(*this, frame - 1)) keep_going = false, stopper = o;
+    }
+  }
+  if (summary.status != RunStatus::Unstable && stopper) {
+    summary.status = RunStatus::StoppedByScene;
+    summary.message = stopper->stop_reason();
+  }
+  if (writer) flush_series(*writer);
+  summary.time = time_;
+  summary.steps = step_;
+  summary.frames = frame;
+  summary.wall_seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  summary.mean_ppe_iterations = step_ > 0 ? double(total_ppe_iterations_) / step_ : 0.0;
+  summary.wall_crossings = wall_crossings_;
+  summary.stage_seconds = timer_.totals();
+  for (auto* o : observers) o->on_finish(*this, summary);
+  return summary;
+}
+
+}  // namespace washout

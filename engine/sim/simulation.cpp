@@ -1,0 +1,347 @@
+#include "engine/sim/simulation.hpp"
+
+#include <omp.h>
+
+#include <algorithm>
+#include <chrono>
+#include <cmath>
+#include <limits>
+#include <sstream>
+
+#include "engine/boundary/virtual_markers.hpp"
+#include "engine/fluid/fluid_interpolation.hpp"
+#include "engine/fluid/isph_stages.hpp"
+#include "engine/io/run_file_writer.hpp"
+#include "engine/sim/particle_builder.hpp"
+
+namespace washout {
+namespace {
+
+PeriodicBox make_periodic_box(const SimulationParameters& p) {
+  PeriodicBox box;
+  for (char c : p.periodic) {
+    const int a = c - 'x';
+    box.periodic[a] = true;
+    box.lower[a] = p.domain_min[a];
+    box.length[a] = p.domain_max[a] - p.domain_min[a];
+    if (!(box.length[a] > 0))
+      throw SceneError(std::string("periodic axis ") + c + " needs domain_max > domain_min", "",
+                       "domain_max");
+  }
+  return box;
+}
+
+std::string format_point(const Particles& p, std::size_t i) {
+  std::ostringstream o;
+  o << "(" << p.position[0][i] << ", " << p.position[1][i];
+  if (p.dim == 3) o << ", " << p.position[2][i];
+  o << ") m";
+  return o.str();
+}
+
+// The vertical axis is the one gravity mostly points along (y in 2D scenes, z in 3D ones).
+int vertical_axis(const SimulationParameters& p) {
+  int axis = p.dim - 1;
+  double best = 0.0;
+  for (int a = 0; a < p.dim; ++a)
+    if (std::abs(p.gravity[a]) > best) best = std::abs(p.gravity[a]), axis = a;
+  return axis;
+}
+
+}  // namespace
+
+Simulation::Simulation(Model model)
+    : model_(std::move(model)),
+      ctx_(model_.params.dim, model_.params.d0, model_.params.h_over_d0, model_.params.rho0,
+           make_periodic_box(model_.params)) {
+  BuiltParticles built = washout::build_particles(model_);
+  particles_ = std::move(built.particles);
+  moving_walls_ = std::move(built.moving_walls);
+  work_.wall_slip = std::move(built.wall_slip);
+  inside_wall_.assign(particles_.fluid_count, 0);
+
+  // Domain: given, or the scene's bounding box with a generous margin (for blow-up detection).
+  const auto& prm = model_.params;
+  Vec3 lo = Vec3::Constant(std::numeric_limits<double>::max()), hi = -lo;
+  for (std::size_t i = 0; i < particles_.size(); ++i) {
+    lo = lo.cwiseMin(particles_.x(i));
+    hi = hi.cwiseMax(particles_.x(i));
+  }
+  double extent = 0.0;
+  for (int a = 0; a < prm.dim; ++a) extent = std::max(extent, hi[a] - lo[a]);
+  const Vec3 margin = Vec3::Constant(std::max(0.5 * extent, 10.0 * prm.h()));
+  domain_lower_ = lo - margin;
+  domain_upper_ = hi + margin;
+  for (int a = 0; a < prm.dim; ++a) {
+    if (!prm.domain_min.empty()) domain_lower_[a] = prm.domain_min[a];
+    if (!prm.domain_max.empty()) domain_upper_[a] = prm.domain_max[a];
+  }
+  for (std::size_t i = 0; i < particles_.fluid_count; ++i)
+    for (int a = 0; a < prm.dim; ++a)
+      if (particles_.position[a][i] < domain_lower_[a] || particles_.position[a][i] > domain_upper_[a])
+        throw SceneError("fluid particle at " + format_point(particles_, i) +
+                             " starts outside the domain (domain_min/domain_max)",
+                         model_.scene_path, "domain_min");
+  const double g = prm.gravity.norm();
+  max_speed_limit_ = prm.max_speed > 0 ? prm.max_speed
+                                       : std::max(10.0 * std::sqrt(2.0 * g * extent), 10.0);
+  for (auto& wall : moving_walls_) {
+    if (!evaluate_wall_motion(wall, 0.0))
+      throw SceneError("the motion of wall '" + model_.walls[wall.wall_index].name +
+                           "' is not finite at t = 0", model_.walls[wall.wall_index].where);
+    set_wall_velocity(wall, particles_);
+    set_wall_position(wall, particles_);
+  }
+  probe_values_.assign(model_.probes.size(), 0.0);
+}
+
+Simulation::~Simulation() = default;
+
+double Simulation::choose_time_step(double until) const {
+  const auto& prm = model_.params;
+  if (prm.dt > 0) return prm.dt;
+  const double h = ctx_.h;
+  double dt = prm.dt_max;
+  if (max_speed_ > 0) dt = std::min(dt, prm.cfl * h / max_speed_);
+  double nu_max = prm.viscosity;
+  for (double nu_t : work_.eddy_viscosity) nu_max = std::max(nu_max, prm.viscosity + nu_t);
+  if (nu_max > 0) dt = std::min(dt, prm.viscous_number * h * h / nu_max);
+  const double g = prm.gravity.norm();
+  if (g > 0) dt = std::min(dt, 0.25 * std::sqrt(h / g));
+  // Land on the next frame time with at most two equal steps (no sliver steps).
+  const double remaining = until - time_;
+  if (remaining > 0) {
+    const double steps = std::ceil(remaining / dt - 1e-9);
+    if (steps <= 2) dt = remaining / steps;
+  }
+  return dt;
+}
+
+StepReport Simulation::step() { return step_until(std::numeric_limits<double>::infinity()); }
+
+StepReport Simulation::step_until(double until) {
+  const auto& prm = model_.params;
+  const auto wall_start = std::chrono::steady_clock::now();
+  StepReport report;
+  const double dt = choose_time_step(until);
+  if (prm.dt == 0 && dt < prm.dt_min)
+    throw UnstableError("the adaptive time step fell to " + std::to_string(dt) +
+                        " s, below dt_min = " + std::to_string(prm.dt_min) + " s");
+  const double t_new = time_ + dt;
+  {
+    auto s = timer_.measure("neighbours");
+    grid_.build(particles_, 2.0 * ctx_.h, ctx_.periodic);
+    grid_.build_list(particles_, particles_.fluid_count, 2.0 * ctx_.h, neighbors_);
+  }
+  {
+    auto s = timer_.measure("density");
+    compute_summation_density(ctx_, neighbors_, particles_);
+    report.free_surface_particles =
+        detect_free_surface(particles_, prm.rho0, prm.free_surface_threshold, work_);
+  }
+  {
+    auto s = timer_.measure("wall_markers");
+    mark_active_boundary(neighbors_, particles_, active_boundary_);
+    update_marker_velocities(ctx_, grid_, particles_, active_boundary_, work_);
+  }
+  if (prm.turbulence == "smagorinsky") {
+    auto s = timer_.measure("turbulence");
+    compute_eddy_viscosity(ctx_, neighbors_, particles_, prm.smagorinsky_constant, work_);
+  }
+  {
+    auto s = timer_.measure("predictor");
+    predict_velocity(ctx_, neighbors_, particles_, prm.viscosity, prm.gravity, dt, work_);
+  }
+  if (!moving_walls_.empty()) {
+    auto s = timer_.measure("moving_walls");
+    for (auto& wall : moving_walls_) {
+      if (!evaluate_wall_motion(wall, t_new))
+        throw UnstableError("the motion of wall '" + model_.walls[wall.wall_index].name +
+                            "' is not finite at t = " + std::to_string(t_new));
+      set_wall_velocity(wall, particles_);
+    }
+  }
+  PpeStatistics ppe;
+  {
+    auto s = timer_.measure("ppe_assembly");
+    ppe = assemble_pressure_poisson(ctx_, neighbors_, particles_, prm.gravity, prm.alpha, dt, work_);
+  }
+  {
+    auto s = timer_.measure("ppe_solve");
+    const bool direct = prm.solver == "cholmod" ||
+                        (prm.solver == "auto" && prm.dim == 2 && ppe.unknowns <= 60000);
+    const std::string wanted = direct ? "cholmod" : "pcg";
+    if (!solver_ || solver_->name() != wanted)
+      solver_ = direct ? make_cholmod_solver()
+                       : make_pcg_solver(prm.solver_tolerance, prm.solver_max_iterations);
+    gather_pressure_guess(particles_, work_);
+    SolveReport solve;
+    try {
+      solve = solver_->solve(work_.matrix, work_.rhs, work_.solution);
+    } catch (const SolverError& e) {
+      throw UnstableError(std::string("pressure solve failed: ") + e.what());
+    }
+    if (!solve.converged)
+      throw UnstableError("the pressure solver did not converge in " +
+                          std::to_string(solve.iterations) + " iterations (residual " +
+                          std::to_string(solve.relative_residual) + ")");
+    scatter_pressure(work_, particles_);
+    report.ppe_iterations = solve.iterations;
+    report.ppe_residual = solve.relative_residual;
+    report.ppe_unknowns = ppe.unknowns;
+    total_ppe_iterations_ += solve.iterations;
+  }
+  {
+    auto s = timer_.measure("corrector");
+    max_speed_ = correct_and_advect(ctx_, neighbors_, particles_, work_, prm.gravity, dt,
+                                    prm.pressure_gradient == "symmetric");
+  }
+  for (auto& wall : moving_walls_) set_wall_position(wall, particles_);
+  time_ = t_new;
+  ++step_;
+  report.step = step_;
+  report.time = time_;
+  report.dt = dt;
+  report.max_speed = max_speed_;
+  {
+    auto s = timer_.measure("checks");
+    check_health(report);
+  }
+  if (!model_.probes.empty()) {
+    auto s = timer_.measure("probes");
+    evaluate_probes();
+  }
+  report.wall_seconds = last_report_.wall_seconds +
+                        std::chrono::duration<double>(std::chrono::steady_clock::now() - wall_start).count();
+  last_report_ = report;
+  return report;
+}
+
+void Simulation::check_health(StepReport& report) {
+  const std::size_t n = particles_.fluid_count;
+  const int dim = particles_.dim;
+  // First offending particle (lowest index) of each kind, found in parallel.
+  std::size_t bad_value = n, too_fast = n, escaped = n;
+  double energy = 0.0;
+  const double limit2 = max_speed_limit_ * max_speed_limit_;
+#pragma omp parallel for reduction(min : bad_value, too_fast, escaped) reduction(+ : energy)
+  for (std::size_t i = 0; i < n; ++i) {
+    double s2 = 0.0;
+    bool finite = true, outside = false;
+    for (int a = 0; a < dim; ++a) {
+      const double u = particles_.velocity[a][i], x = particles_.position[a][i];
+      finite = finite && std::isfinite(u) && std::isfinite(x);
+      outside = outside || x < domain_lower_[a] || x > domain_upper_[a];
+      s2 += u * u;
+    }
+    if (!finite) bad_value = std::min(bad_value, i);
+    if (s2 > limit2) too_fast = std::min(too_fast, i);
+    if (outside) escaped = std::min(escaped, i);
+    energy += 0.5 * ctx_.mass * s2;
+  }
+  report.kinetic_energy = energy;
+  std::ostringstream where;
+  if (bad_value < n) {
+    where << "particle " << bad_value << " has a non-finite velocity or position";
+    throw UnstableError(where.str());
+  }
+  if (too_fast < n) {
+    where << "runaway velocity: particle " << too_fast << " at " << format_point(particles_, too_fast)
+          << " moves at " << std::sqrt(std::pow(particles_.velocity[0][too_fast], 2) +
+                                       std::pow(particles_.velocity[1][too_fast], 2) +
+                                       std::pow(particles_.velocity[2][too_fast], 2))
+          << " m/s (limit max_speed = " << max_speed_limit_ << " m/s)";
+    throw UnstableError(where.str());
+  }
+  if (escaped < n) {
+    where << "particle " << escaped << " left the domain at " << format_point(particles_, escaped);
+    throw UnstableError(where.str());
+  }
+  // Fluid inside a wall: only particles that see a boundary particle can be there.
+  std::size_t inside = 0, new_crossings = 0;
+#pragma omp parallel for reduction(+ : inside, new_crossings) schedule(dynamic, 512)
+  for (std::size_t i = 0; i < n; ++i) {
+    bool sees_wall = false;
+    for (std::uint64_t k = neighbors_.offset[i]; k < neighbors_.offset[i + 1] && !sees_wall; ++k)
+      sees_wall = neighbors_.index[k] >= n;
+    bool in_wall = false;
+    if (sees_wall) {
+      const Vec3 x = particles_.x(i);
+      for (std::size_t w = 0; w < model_.walls.size() && !in_wall; ++w) {
+        Vec3 shift = Vec3::Zero();
+        for (const auto& mw : moving_walls_)
+          if (mw.wall_index == w) shift = mw.displacement;
+        in_wall = model_.walls[w].shape.signed_distance(x - shift, dim) < 0.0;
+      }
+    }
+    if (in_wall) {
+      ++inside;
+      if (!inside_wall_[i]) ++new_crossings;
+    }
+    inside_wall_[i] = in_wall;
+  }
+  report.particles_in_walls = inside;
+  wall_crossings_ += static_cast<long>(new_crossings);
+}
+
+void Simulation::evaluate_probes() {
+  const auto& prm = model_.params;
+  const std::size_t n = particles_.fluid_count;
+  const int up = vertical_axis(prm);
+  for (std::size_t k = 0; k < model_.probes.size(); ++k) {
+    const auto& probe = model_.probes[k];
+    double value = 0.0;
+    if (probe.quantity == ProbeSpec::Quantity::Pressure) {
+      const double m[3] = {probe.point[0], probe.point[1], probe.point[2]};
+      double sum = 0.0;
+      // The grid was built at the start of the step; particles moved by at most cfl*h since.
+      const double fraction = accumulate_fluid_at(
+          ctx_, grid_, particles_, m, [&](std::uint32_t f, double w) { sum += w * particles_.pressure[f]; });
+      value = fraction < kDryFluidFraction ? 0.0 : sum * ctx_.volume / fraction;
+    } else if (probe.quantity == ProbeSpec::Quantity::WaterHeight) {
+      double top = -std::numeric_limits<double>::max();
+#pragma omp parallel for reduction(max : top)
+      for (std::size_t i = 0; i < n; ++i) {
+        bool in_column = true;
+        for (int a = 0; a < prm.dim; ++a)
+          if (a != up && std::abs(particles_.position[a][i] - probe.point[a]) > ctx_.d0)
+            in_column = false;
+        if (in_column) top = std::max(top, particles_.position[up][i]);
+      }
+      value = std::max(0.0, top + 0.5 * ctx_.d0 - probe.point[up]);
+    } else {
+      // The front: the furthest fluid particle along the axis that is part of the bulk
+      // (summation density above half of rho0), so that lone spray does not count.
+      double front = -std::numeric_limits<double>::max();
+#pragma omp parallel for reduction(max : front)
+      for (std::size_t i = 0; i < n; ++i)
+        if (particles_.density[i] > 0.5 * prm.rho0)
+          front = std::max(front, particles_.position[probe.axis][i]);
+      value = front + 0.5 * ctx_.d0;
+    }
+    probe_values_[k] = value;
+  }
+}
+
+void Simulation::update_boundary_pressures() {
+  grid_.build(particles_, 2.0 * ctx_.h, ctx_.periodic);
+  // Which boundary particles see fluid: recompute from the grid around each one.
+  const std::size_t n = particles_.size();
+  active_boundary_.assign(n, 0);
+  const double r2max = 4.0 * ctx_.h * ctx_.h;
+#pragma omp parallel for schedule(dynamic, 512)
+  for (std::size_t w = particles_.fluid_count; w < n; ++w) {
+    const double x[3] = {particles_.position[0][w], particles_.position[1][w], particles_.position[2][w]};
+    bool sees = false;
+    grid_.for_each_candidate(x, [&](std::uint32_t f) {
+      if (sees || f >= particles_.fluid_count) return;
+      double d[3];
+      ctx_.displacement(particles_, w, f, d);
+      sees = d[0] * d[0] + d[1] * d[1] + d[2] * d[2] < r2max;
+    });
+    active_boundary_[w] = sees;
+  }
+  update_wall_pressures(ctx_, grid_, model_.params.gravity, active_boundary_, particles_);
+}
+
+}  // namespace washout

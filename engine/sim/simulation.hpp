@@ -1,0 +1,148 @@
+#pragma once
+// A run: the Model turned into particles and stepped by the stabilized ISPH projection method.
+// The step is composed from what the scene uses (no turbulence stage without turbulence, no
+// moving-wall update without moving walls); each stage's time is measured.
+#include <memory>
+#include <stdexcept>
+#include <string>
+#include <vector>
+
+#include "engine/boundary/moving_walls.hpp"
+#include "engine/core/neighbor_grid.hpp"
+#include "engine/fluid/fluid_work.hpp"
+#include "engine/fluid/sph_context.hpp"
+#include "engine/model/model.hpp"
+#include "engine/sim/stage_timer.hpp"
+#include "engine/solvers/linear_solver.hpp"
+
+namespace washout {
+
+namespace io {
+class RunFileWriter;
+}
+
+// The scene cannot be run as given (caught before the first step). `where` names the scene
+// location and `parameter` the offending parameter when known.
+class SceneError : public std::runtime_error {
+ public:
+  SceneError(const std::string& message, std::string where = "", std::string parameter = "")
+      : std::runtime_error(message), where_(std::move(where)), parameter_(std::move(parameter)) {}
+  const std::string& where() const { return where_; }
+  const std::string& parameter() const { return parameter_; }
+
+ private:
+  std::string where_, parameter_;
+};
+
+// The simulation blew up: NaN, runaway speed, particles leaving the domain, solver failure.
+class UnstableError : public std::runtime_error {
+ public:
+  using std::runtime_error::runtime_error;
+};
+
+struct StepReport {
+  long step = 0;
+  double time = 0.0;  // after the step
+  double dt = 0.0;
+  int ppe_iterations = 0;
+  double ppe_residual = 0.0;
+  std::size_t ppe_unknowns = 0;
+  std::size_t free_surface_particles = 0;
+  double max_speed = 0.0;
+  double kinetic_energy = 0.0;
+  std::size_t particles_in_walls = 0;
+  int substeps = 0;
+  double wall_seconds = 0.0;  // cumulative
+};
+
+enum class RunStatus { Completed, StoppedByScene, Unstable };
+
+struct RunSummary {
+  RunStatus status = RunStatus::Completed;
+  std::string message;
+  double time = 0.0;
+  long steps = 0;
+  std::size_t frames = 0;
+  double last_frame_time = 0.0;
+  double wall_seconds = 0.0;
+  std::size_t fluid_particles = 0, boundary_particles = 0;
+  double mean_ppe_iterations = 0.0;
+  long wall_crossings = 0;  // fluid particles found inside a wall, summed over steps
+  std::string output_path;
+  std::vector<std::pair<std::string, double>> stage_seconds;
+};
+
+class Simulation;
+
+// Watches a run: progress display, Lua callbacks, frame rendering. Returning false stops it.
+class RunObserver {
+ public:
+  virtual ~RunObserver() = default;
+  virtual void on_start(const Simulation&) {}
+  virtual bool on_step(const Simulation&, const StepReport&) { return true; }
+  virtual bool on_frame(const Simulation&, std::size_t /*frame_index*/) { return true; }
+  virtual void on_finish(const Simulation&, const RunSummary&) {}
+  // Why the observer stopped the run (read after on_step/on_frame returned false).
+  virtual std::string stop_reason() const { return "stopped by the scene"; }
+};
+
+class Simulation {
+ public:
+  explicit Simulation(Model model);  // builds particles; throws SceneError
+  ~Simulation();
+
+  const Model& model() const { return model_; }
+  const SimulationParameters& params() const { return model_.params; }
+  const Particles& particles() const { return particles_; }
+  const SphContext& context() const { return ctx_; }
+  double time() const { return time_; }
+  long step_count() const { return step_; }
+  ParticleView view() const { return particles_.view(time_, model_.params.d0); }
+  const StageTimer& timer() const { return timer_; }
+  const std::vector<double>& probe_values() const { return probe_values_; }
+  const StepReport& last_report() const { return last_report_; }
+
+  // One projection step; throws UnstableError when the state blows up.
+  StepReport step();
+  // One step whose size is trimmed so that the run lands exactly on time `until` (a frame).
+  StepReport step_until(double until);
+  // Steps to end_time, writing frames to output_path (empty: no file).
+  RunSummary run(const std::string& output_path, const std::vector<RunObserver*>& observers);
+
+  // The wall pressures (virtual markers) for the current state, for output and loads.
+  void update_boundary_pressures();
+
+ private:
+  double choose_time_step(double until) const;
+  void check_health(StepReport& report);
+  void evaluate_probes();
+  void write_frame(io::RunFileWriter& writer);
+  void flush_series(io::RunFileWriter& writer);
+
+  Model model_;
+  Particles particles_;
+  SphContext ctx_;
+  NeighborGrid grid_;
+  NeighborList neighbors_;
+  FluidWork work_;
+  std::unique_ptr<LinearSolver> solver_;
+  std::vector<MovingWall> moving_walls_;
+  std::vector<std::uint8_t> active_boundary_;
+  std::vector<std::uint8_t> inside_wall_;
+  StageTimer timer_;
+  double time_ = 0.0;
+  long step_ = 0;
+  double max_speed_ = 0.0;
+  double max_speed_limit_ = 0.0;
+  Vec3 domain_lower_, domain_upper_;
+  long wall_crossings_ = 0;
+  long total_ppe_iterations_ = 0;
+  std::vector<double> probe_values_;
+  StepReport last_report_;
+  // Series buffered between frames, appended to the file at each frame.
+  std::vector<double> series_time_, series_dt_, series_residual_, series_wall_, series_energy_;
+  std::vector<std::int64_t> series_step_, series_iterations_, series_substeps_;
+  std::vector<double> probe_series_;  // rows of probe_values_
+};
+
+}  // namespace washout

@@ -1,0 +1,20 @@
+-- Water at rest in a tank (2D). The pressure must settle to rho g (H - y) with no particle
+-- crossing a wall. Used to calibrate alpha and to test the wall treatment.
+local tank = require("tank")
+
+local P = washout.parameters {
+  dim = 2,
+  d0 = 0.005,            -- 20 particles over the depth
+  end_time = 1.0,
+  output_interval = 0.1,
+  wall_slip = 0.0,
+  scene = {
+    water_height = 0.1,  -- H [m]
+    tank_width = 0.1,    -- [m]
+  },
+}
+
+local W, H = P.tank_width, P.water_height
+washout.fluid { washout.box { min = { 0, 0 }, max = { W, H } } }
+washout.wall { tank.open_box(P, { min = { 0, 0 }, max = { W, 1.5 * H } }), name = "tank" }
+washout.probe { name = "bottom_pressure", quantity = "pressure", at = { W / 2, 0.1 * H } }

@@ -1,0 +1,83 @@
+// Signed distances and normals of the wall shapes: exact values at chosen points, unit normals
+// equal to the gradient (checked by central differences away from edges).
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <numbers>
+
+#include "engine/contact/wall.hpp"
+
+namespace washout::contact {
+namespace {
+
+// The normal is the gradient of the distance: central differences of width 1e-6 agree to 1e-6.
+void expect_normal_is_gradient(const WallShape& shape, const Vec3& x) {
+  Vec3 n;
+  signed_distance(shape, x, &n);
+  Vec3 gradient;
+  const double h = 1e-6;
+  for (int k = 0; k < 3; ++k) {
+    const Vec3 e = h * Vec3::Unit(k);
+    gradient[k] = (signed_distance(shape, x + e) - signed_distance(shape, x - e)) / (2 * h);
+  }
+  EXPECT_NEAR(n.norm(), 1.0, 1e-12);
+  EXPECT_LT((n - gradient).norm(), 1e-6) << "at " << x.transpose();
+}
+
+TEST(ContactWall, TiltedPlane) {
+  const double angle = 0.3;
+  const PlaneWall plane{Vec3(0, 0, 1), Vec3(-std::sin(angle), 0, std::cos(angle))};
+  Vec3 n;
+  EXPECT_NEAR(signed_distance(plane, Vec3(0, 0, 1.5), &n), 0.5 * std::cos(angle), 1e-15);
+  EXPECT_LT((n - plane.normal).norm(), 1e-15);
+  EXPECT_NEAR(signed_distance(plane, Vec3(1, 0, 1)), -std::sin(angle), 1e-15);
+}
+
+TEST(ContactWall, BoxObstacleFacesEdgesCornersAndInside) {
+  BoxObstacle box;
+  box.centre = Vec3(1, 2, 3);
+  box.half_size = Vec3(0.5, 0.2, 0.1);
+  Vec3 n;
+  EXPECT_NEAR(signed_distance(box, Vec3(1, 2, 3.3), &n), 0.2, 1e-15);  // above the top face
+  EXPECT_LT((n - Vec3::UnitZ()).norm(), 1e-15);
+  EXPECT_NEAR(signed_distance(box, Vec3(1.8, 2.6, 3), &n), 0.5, 1e-15);  // off an edge: 0.3, 0.4
+  EXPECT_LT((n - Vec3(0.6, 0.8, 0)).norm(), 1e-15);
+  EXPECT_NEAR(signed_distance(box, Vec3(1, 2, 2.95), &n), -0.05, 1e-15);  // inside, near bottom
+  EXPECT_LT((n + Vec3::UnitZ()).norm(), 1e-15);
+  for (const Vec3& x : {Vec3(1.1, 2.05, 3.4), Vec3(1.9, 2.5, 3.3), Vec3(0.2, 1.0, 2.0),
+                        Vec3(1.2, 2.0, 3.05)})
+    expect_normal_is_gradient(box, x);
+  // Rotated by 90 degrees about z: x and y extents swap.
+  box.rotation = Eigen::AngleAxisd(std::numbers::pi / 2, Vec3::UnitZ()).toRotationMatrix();
+  EXPECT_NEAR(signed_distance(box, Vec3(1, 2.9, 3)), 0.4, 1e-12);
+  // 2D: unbounded in z.
+  box.rotation.setIdentity();
+  box.half_size.z() = 0.0;
+  EXPECT_NEAR(signed_distance(box, Vec3(1.0, 2.3, 100.0), &n), 0.1, 1e-15);
+}
+
+TEST(ContactWall, CylinderObstacle) {
+  CylinderObstacle c{Vec3::Zero(), Vec3::UnitY(), 0.5, 1.0};
+  Vec3 n;
+  EXPECT_NEAR(signed_distance(c, Vec3(0.8, 0.3, 0), &n), 0.3, 1e-15);
+  EXPECT_LT((n - Vec3::UnitX()).norm(), 1e-15);
+  EXPECT_NEAR(signed_distance(c, Vec3(0, 1.2, 0.1), &n), 0.2, 1e-15);  // beyond the cap
+  EXPECT_NEAR(signed_distance(c, Vec3(0.0, 0.0, 0.1)), -0.4, 1e-15);
+  for (const Vec3& x : {Vec3(0.7, 0.2, 0.3), Vec3(0.7, 1.3, 0.1), Vec3(0.1, 0.2, 0.15)})
+    expect_normal_is_gradient(c, x);
+  c.half_length = 0.0;  // infinite
+  EXPECT_NEAR(signed_distance(c, Vec3(0, 100, 0.7)), 0.2, 1e-12);
+}
+
+TEST(ContactWall, CustomSignedDistance) {
+  const SignedDistanceWall sphere{[](const Vec3& x, Vec3* n) {
+    *n = x.normalized();
+    return x.norm() - 1.0;
+  }};
+  Vec3 n;
+  EXPECT_NEAR(signed_distance(sphere, Vec3(0, 3, 0), &n), 2.0, 1e-15);
+  EXPECT_LT((n - Vec3::UnitY()).norm(), 1e-15);
+}
+
+}  // namespace
+}  // namespace washout::contact
