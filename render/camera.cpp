@@ -22,8 +22,8 @@ Camera Camera::orthographic(const Eigen::Vector3d& eye, const Eigen::Vector3d& t
 }
 
 Camera Camera::perspective(const Eigen::Vector3d& eye, const Eigen::Vector3d& target,
-                           const Eigen::Vector3d& up, double fov_y_deg, double aspect,
-                           double near, double far) {
+                           const Eigen::Vector3d& up, double fov_y_deg, double aspect, double near,
+                           double far) {
   Camera c;
   c.orthographic_ = false;
   c.eye_ = eye;
@@ -72,8 +72,8 @@ Eigen::Matrix4d Camera::projection_matrix() const {
 }
 
 std::optional<Eigen::Vector3d> Camera::to_ndc(const Eigen::Vector3d& world) const {
-  const Eigen::Vector4d rel((world - origin()).x(), (world - origin()).y(),
-                            (world - origin()).z(), 1.0);
+  const Eigen::Vector4d rel((world - origin()).x(), (world - origin()).y(), (world - origin()).z(),
+                            1.0);
   const Eigen::Vector4d clip = projection_matrix() * view_matrix() * rel;
   if (clip.w() <= 0.0) return std::nullopt;
   return Eigen::Vector3d(clip.x() / clip.w(), clip.y() / clip.w(), clip.z() / clip.w());

@@ -14,8 +14,8 @@ class Camera {
                              const Eigen::Vector3d& up, double half_width, double half_height,
                              double near, double far);
   static Camera perspective(const Eigen::Vector3d& eye, const Eigen::Vector3d& target,
-                            const Eigen::Vector3d& up, double fov_y_deg, double aspect,
-                            double near, double far);
+                            const Eigen::Vector3d& up, double fov_y_deg, double aspect, double near,
+                            double far);
 
   bool is_orthographic() const { return orthographic_; }
   const Eigen::Vector3d& eye() const { return eye_; }
@@ -37,7 +37,7 @@ class Camera {
   Eigen::Vector3d target_ = Eigen::Vector3d::Zero();
   Eigen::Vector3d up_ = Eigen::Vector3d::UnitZ();
   double half_width_ = 1.0, half_height_ = 1.0;  // orthographic
-  double fov_y_deg_ = 35.0, aspect_ = 1.0;        // perspective
+  double fov_y_deg_ = 35.0, aspect_ = 1.0;       // perspective
   double near_ = 0.1, far_ = 100.0;
 };
 

@@ -126,7 +126,8 @@ void validate_camera_spec(const CameraSpec& spec) {
 
 Camera fit_camera(const CameraSpec& spec, int dim, const SceneBounds& bounds, double aspect) {
   validate_camera_spec(spec);
-  if (dim == 2) return fit_orthographic(bounds, -Eigen::Vector3d::UnitZ(), Eigen::Vector3d::UnitY(), aspect);
+  if (dim == 2)
+    return fit_orthographic(bounds, -Eigen::Vector3d::UnitZ(), Eigen::Vector3d::UnitY(), aspect);
   if (spec.explicit_pose) {
     const Eigen::Vector3d eye = vec(spec.position), target = vec(spec.target);
     const Basis basis = basis_for(target - eye, vec(spec.up));

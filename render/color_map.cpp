@@ -8,13 +8,13 @@ namespace {
 
 // Evenly spaced anchors from t = 0 to t = 1.
 constexpr std::array<Rgb8, 7> kAnchors = {{
-    {40, 45, 140},    // deep blue
-    {40, 100, 220},   // blue
-    {40, 180, 225},   // cyan
-    {90, 205, 120},   // green
-    {225, 215, 55},   // yellow
-    {245, 130, 35},   // orange
-    {180, 25, 30},    // dark red
+    {40, 45, 140},   // deep blue
+    {40, 100, 220},  // blue
+    {40, 180, 225},  // cyan
+    {90, 205, 120},  // green
+    {225, 215, 55},  // yellow
+    {245, 130, 35},  // orange
+    {180, 25, 30},   // dark red
 }};
 
 std::uint8_t mix(std::uint8_t a, std::uint8_t b, double f) {

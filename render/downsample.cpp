@@ -22,7 +22,8 @@ Image downsample_rgba(const std::uint8_t* rgba, int width, int height, int facto
         }
       }
       std::uint8_t* pixel = out + (static_cast<std::size_t>(y) * width + x) * 3;
-      for (int c = 0; c < 3; ++c) pixel[c] = static_cast<std::uint8_t>((sum[c] + samples / 2) / samples);
+      for (int c = 0; c < 3; ++c)
+        pixel[c] = static_cast<std::uint8_t>((sum[c] + samples / 2) / samples);
     }
   }
   return image;

@@ -12,8 +12,9 @@ struct FrameLayout {
   int width = 0, height = 0;  // the whole image
   int font_scale = 1;         // pixels per font pixel
   int margin = 8;
-  PixelRect plot;       // the scene is fitted into this area
-  PixelRect color_bar;  // the gradient itself: the high end on the top row, the low end at the bottom
+  PixelRect plot;  // the scene is fitted into this area
+  PixelRect
+      color_bar;  // the gradient itself: the high end on the top row, the low end at the bottom
   bool has_overlay = true;  // false for images too small to hold the bar beside the scene
 
   static FrameLayout for_image(int width, int height);

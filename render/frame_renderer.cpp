@@ -18,18 +18,19 @@
 #include "render/palette.hpp"
 #include "render/scene_bounds.hpp"
 #include "render/sphere_impostor_pass.hpp"
+#include "render/wall_cutaway.hpp"
 
 namespace washout::render {
 namespace {
 
-constexpr int kMinSize = 16;  // the overlay is left out below about 200 pixels
+constexpr int kMinSize = 16;  // tiny frames are allowed; they only lose the overlay
 constexpr int kMaxSize = 8192;
 
 void validate(const RenderOptions& o) {
   if (o.width < kMinSize || o.height < kMinSize || o.width > kMaxSize || o.height > kMaxSize) {
     throw RenderError("frame size " + std::to_string(o.width) + "x" + std::to_string(o.height) +
-                      " is outside " + std::to_string(kMinSize) + ".." +
-                      std::to_string(kMaxSize) + " pixels");
+                      " is outside " + std::to_string(kMinSize) + ".." + std::to_string(kMaxSize) +
+                      " pixels");
   }
   if (o.supersample < 1 || o.supersample > 4) {
     throw RenderError("supersample must be 1, 2, 3 or 4, not " + std::to_string(o.supersample));
@@ -65,16 +66,22 @@ struct FrameRenderer::State {
   ColorField field = ColorField::Speed;
   FrameLayout layout;
   std::optional<Camera> camera;
+  WallCutaway cutaway;                     // chosen with the camera
   std::optional<ValueRange> locked_range;  // auto range, once a frame showed a spread
   std::optional<ValueRange> last_range;
   std::unique_ptr<OsmesaContext> context;
   std::unique_ptr<SphereImpostorPass> spheres;  // destroyed before the context
   std::vector<SphereInstance> instances;
+  OcclusionCuller culler;
 
   ~State() {
-    if (context) {
+    // The shader objects belong to this context: free them while it is current.
+    if (!context) return;
+    try {
       context->make_current();
       spheres.reset();
+    } catch (const ContextError&) {
+      spheres.release();  // the context goes away with its objects anyway
     }
   }
 
@@ -94,30 +101,30 @@ struct FrameRenderer::State {
     const Eigen::Vector3d origin = camera->origin();
     instances.resize(view.count);
     const auto n = static_cast<long long>(view.count);
-    long long invalid = 0;
-#pragma omp parallel for schedule(static) reduction(+ : invalid)
+    long long left_out = 0;
+#pragma omp parallel for schedule(static) reduction(+ : left_out)
     for (long long k = 0; k < n; ++k) {
       const auto i = static_cast<std::size_t>(k);
       SphereInstance& s = instances[i];
-      bool finite = true;
-      for (int axis = 0; axis < 3; ++axis) {
-        const double x = axis < view.dim ? view.position(i, axis) : 0.0;
-        finite = finite && std::isfinite(x);
-        s.center[axis] = static_cast<float>(x - origin[axis]);
-      }
+      Eigen::Vector3d p = Eigen::Vector3d::Zero();
+      for (int axis = 0; axis < view.dim; ++axis) p[axis] = view.position(i, axis);
+      for (int axis = 0; axis < 3; ++axis)
+        s.center[axis] = static_cast<float>(p[axis] - origin[axis]);
       const std::uint8_t kind = view.kind ? view.kind[i] : 0;
-      const Rgb8 c =
-          kind == static_cast<std::uint8_t>(ParticleKind::Fluid)
-              ? color_map(normalized(range, color_field_value(view, i, field)))
-              : kind_color(kind);
+      const bool fluid = kind == static_cast<std::uint8_t>(ParticleKind::Fluid);
+      const Rgb8 c = fluid ? color_map(normalized(range, color_field_value(view, i, field)))
+                           : kind_color(kind);
+      // A diverged particle (NaN or inf position) is left out rather than drawn anywhere.
+      const bool wall = kind == static_cast<std::uint8_t>(ParticleKind::FixedWall) ||
+                        kind == static_cast<std::uint8_t>(ParticleKind::MovingWall);
+      const bool drawn = p.allFinite() && !(wall && cutaway.hides(p));
       s.color[0] = c.r;
       s.color[1] = c.g;
       s.color[2] = c.b;
-      s.color[3] = finite ? 255 : 0;
-      invalid += finite ? 0 : 1;
+      s.color[3] = drawn ? 255 : 0;
+      left_out += drawn ? 0 : 1;
     }
-    // A diverged particle (NaN or inf position) is left out rather than drawn anywhere.
-    if (invalid > 0) {
+    if (left_out > 0) {
       std::erase_if(instances, [](const SphereInstance& s) { return s.color[3] == 0; });
     }
   }
@@ -178,13 +185,15 @@ Image FrameRenderer::render(const ParticleView& view) {
     const double aspect =
         static_cast<double>(st.layout.plot.width) / static_cast<double>(st.layout.plot.height);
     st.camera = fit_camera(st.options.camera, view.dim, particle_bounds(view, radius), aspect);
+    if (st.options.cutaway_walls && view.dim == 3) {
+      st.cutaway = WallCutaway(*st.camera, fluid_bounds(view, 0.0), radius);
+    }
   }
   const ValueRange range = st.range_for(view);
   st.last_range = range;
   st.build_instances(view, range);
-  if (st.options.occlusion_culling) {
-    cull_hidden_spheres(st.instances, *st.camera, radius, st.layout.plot.width,
-                        st.layout.plot.height);
+  if (st.options.occlusion_culling && view.dim == 3) {  // in a plane nothing hides
+    st.culler.cull(st.instances, *st.camera, radius, st.layout.plot.width, st.layout.plot.height);
   }
   st.draw(radius);
   Image image = downsample_rgba(st.context->rgba(), st.options.width, st.options.height,
@@ -199,7 +208,7 @@ void FrameRenderer::render_png(const ParticleView& view, const std::string& path
 }
 
 std::optional<std::array<double, 2>> FrameRenderer::project_to_pixel(double x, double y,
-                                                                      double z) const {
+                                                                     double z) const {
   const State& st = *state_;
   if (!st.camera) return std::nullopt;
   const auto ndc = st.camera->to_ndc(Eigen::Vector3d(x, y, z));

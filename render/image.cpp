@@ -57,8 +57,8 @@ void Image::write_png(const std::string& path) const {
   image.width = static_cast<png_uint_32>(width_);
   image.height = static_cast<png_uint_32>(height_);
   image.format = PNG_FORMAT_RGB;
-  const int ok = png_image_write_to_stdio(&image, file.get(), 0, bytes_.data(), width_ * 3,
-                                          nullptr);
+  const int ok =
+      png_image_write_to_stdio(&image, file.get(), 0, bytes_.data(), width_ * 3, nullptr);
   const std::string message = image.message;
   png_image_free(&image);
   if (!ok) throw ImageWriteError("cannot write image " + path + ": " + message);

@@ -5,6 +5,7 @@
 // sphere is dropped only when every pixel its quad could touch is already covered by a nearer
 // sphere's solid core, so the image is the same as drawing everything.
 #include <cstddef>
+#include <cstdint>
 #include <vector>
 
 #include "render/camera.hpp"
@@ -12,9 +13,28 @@
 
 namespace washout::render {
 
-// Keeps, in place, the spheres that may be visible in a width x height pixel view, ordered
-// front to back. Returns how many were dropped.
-std::size_t cull_hidden_spheres(std::vector<SphereInstance>& spheres, const Camera& camera,
-                                double radius, int width, int height);
+class OcclusionCuller {
+ public:
+  // Keeps, in place, the spheres that may be visible in a width x height pixel view, ordered
+  // front to back. Returns how many were dropped. Work buffers are kept for the next frame.
+  std::size_t cull(std::vector<SphereInstance>& spheres, const Camera& camera, double radius,
+                   int width, int height);
+
+  // Where a sphere lands on a grid of one cell per pixel, and the depths it spans.
+  struct Footprint {
+    float x = 0, y = 0;     // centre, in pixels
+    float reach = 0;        // radius of the disc the shader's quad may draw into, in pixels
+    float core = 0;         // radius of a disc surely covered by the sphere, in pixels
+    float depth = 0;        // distance of the centre in front of the camera
+    bool in_front = false;  // wholly in front of the camera plane (else never culled)
+  };
+
+ private:
+  std::vector<Footprint> prints_;
+  std::vector<std::uint32_t> bucket_starts_;
+  std::vector<std::uint32_t> order_;
+  std::vector<float> covered_;
+  std::vector<SphereInstance> kept_;
+};
 
 }  // namespace washout::render

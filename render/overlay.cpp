@@ -54,8 +54,8 @@ void draw_color_bar(Image& image, const FrameLayout& layout, const ValueRange& r
   draw_text(image, label_x, bar.y - half_text, format_label_value(range.max, range), kTextColor, s);
   draw_text(image, label_x, bar.y + bar.height / 2 - half_text, format_label_value(mid, range),
             kTextColor, s);
-  draw_text(image, label_x, bar.y + bar.height - 1 - half_text, format_label_value(range.min, range),
-            kTextColor, s);
+  draw_text(image, label_x, bar.y + bar.height - 1 - half_text,
+            format_label_value(range.min, range), kTextColor, s);
   // Title right-aligned in the top strip, so a long one may extend over the scene's strip.
   draw_text(image, layout.width - layout.margin - text_width(title, s), layout.margin, title,
             kTextColor, s);

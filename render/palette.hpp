@@ -7,7 +7,7 @@ namespace washout::render {
 
 inline constexpr Rgb8 kBackgroundColor = {248, 248, 248};
 inline constexpr Rgb8 kTextColor = {25, 25, 25};
-inline constexpr Rgb8 kWallColor = {150, 150, 150};       // kinds 1 (fixed) and 2 (moving)
-inline constexpr Rgb8 kRigidBodyColor = {200, 60, 190};   // kind 3
+inline constexpr Rgb8 kWallColor = {150, 150, 150};      // kinds 1 (fixed) and 2 (moving)
+inline constexpr Rgb8 kRigidBodyColor = {200, 60, 190};  // kind 3
 
 }  // namespace washout::render

@@ -28,7 +28,9 @@ struct RenderOptions {
   double range_max = 1.0;
   CameraSpec camera;
   int supersample = 2;  // render at this multiple of the size, then average down (1 to 4)
-  // Leave out spheres hidden behind nearer ones (same image, much faster for dense 3D blocks).
+  // 3D: leave out the walls between the camera and the water (render/wall_cutaway.hpp).
+  bool cutaway_walls = true;
+  // Leave out spheres hidden behind nearer ones (same image, faster for dense 3D blocks).
   bool occlusion_culling = true;
 };
 

@@ -1,6 +1,7 @@
 #pragma once
 // The box around every particle of a frame (all kinds), and the drawn particle radius.
 #include <Eigen/Core>
+#include <optional>
 
 #include "engine/core/particle_view.hpp"
 
@@ -15,6 +16,9 @@ struct SceneBounds {
 
 // Box of the particle centres grown by pad on every side; z is 0 in 2D.
 SceneBounds particle_bounds(const ParticleView& view, double pad);
+
+// Box of the fluid particles only (kind 0), grown by pad; nullopt without fluid.
+std::optional<SceneBounds> fluid_bounds(const ParticleView& view, double pad);
 
 // World radius of a drawn particle: d0 / 2, so that neighbours at spacing d0 touch. A view
 // without d0 gets the spacing estimated from its bounding box and count.

@@ -15,30 +15,38 @@
 namespace washout::render {
 namespace {
 
+static_assert(kSphereShading.shininess == 32.0, "the fragment shader squares five times");
+
 // The quad faces the camera and sits at the front of the sphere, so that in perspective it
 // still covers the whole silhouette.
 // One quad (two triangles, six vertices) per sphere, generated from gl_VertexID: the sphere's
 // data is fetched from a buffer texture. This avoids instanced drawing, which llvmpipe runs
 // one instance at a time. The quad faces the camera and sits at the front of the sphere, so
-// that in perspective it still covers the whole silhouette.
-constexpr const char* kVertexShader = R"(#version 330 core
+// that in perspective it still covers the whole silhouette. Each shader is compiled twice,
+// with PERSPECTIVE 0 and 1, so that no fragment pays for a branch on the camera kind.
+constexpr const char* kVertexShader = R"(
 uniform usamplerBuffer spheres;  // per sphere: center x, y, z as float bits, then RGBA8
 uniform mat4 view;
 uniform mat4 projection;
 uniform float radius;
-uniform bool orthographic;
 out vec3 quad_position;
 out vec3 sphere_center;
-out vec3 base_color;
+out vec2 corner_offset;
+flat out vec3 base_color;
 const vec2 corners[6] = vec2[6](vec2(-1.0, -1.0), vec2(1.0, -1.0), vec2(-1.0, 1.0),
                                 vec2(-1.0, 1.0), vec2(1.0, -1.0), vec2(1.0, 1.0));
 void main() {
   uvec4 data = texelFetch(spheres, gl_VertexID / 6);
   vec2 corner = corners[gl_VertexID % 6];
   vec3 c = (view * vec4(uintBitsToFloat(data.xyz), 1.0)).xyz;
-  // In perspective an off-axis sphere projects to an ellipse stretched by 1/cos(angle).
+#if PERSPECTIVE
+  // An off-axis sphere projects to an ellipse stretched by 1/cos(angle): grow the quad.
   float depth = max(-c.z - radius, 1e-6 * radius);
-  float grow = orthographic ? 1.0 : 1.05 * length(c) / max(-c.z, 1e-6 * radius) + 2.0 * radius / depth;
+  float grow = 1.05 * length(c) / max(-c.z, 1e-6 * radius) + 2.0 * radius / depth;
+#else
+  float grow = 1.0;
+#endif
+  corner_offset = corner;
   quad_position = c + vec3(corner * radius * grow, radius);
   sphere_center = c;
   base_color = vec3(uvec3(data.w, data.w >> 8u, data.w >> 16u) & 255u) / 255.0;
@@ -46,44 +54,55 @@ void main() {
 }
 )";
 
-constexpr const char* kFragmentShader = R"(#version 330 core
-#extension GL_ARB_conservative_depth : require
-layout(depth_greater) out float gl_FragDepth;
+constexpr const char* kFragmentShader = R"(
 in vec3 quad_position;
 in vec3 sphere_center;
-in vec3 base_color;
-uniform mat4 projection;
+in vec2 corner_offset;
+flat in vec3 base_color;
 uniform float radius;
-uniform bool orthographic;
+uniform vec2 depth_transform;  // NDC depth = (a z + b) / w, w = 1 or -z (projection row 3)
 uniform vec3 light_direction;
 uniform float ambient;
 uniform float diffuse;
 uniform float specular;
-uniform float shininess;
 out vec4 frag_color;
 void main() {
-  // The view ray through this fragment, in camera space.
-  vec3 origin = orthographic ? vec3(quad_position.xy, 0.0) : vec3(0.0);
-  vec3 dir = orthographic ? vec3(0.0, 0.0, -1.0) : normalize(quad_position);
-  vec3 oc = origin - sphere_center;
-  float b = dot(oc, dir);
-  float disc = b * b - (dot(oc, oc) - radius * radius);
+#if PERSPECTIVE
+  // Cast the view ray through this fragment at the sphere (camera space, eye at the origin).
+  vec3 dir = normalize(quad_position);
+  float b = dot(sphere_center, dir);
+  float disc = b * b - (dot(sphere_center, sphere_center) - radius * radius);
   if (disc < 0.0) discard;
-  vec3 hit = origin + (-b - sqrt(disc)) * dir;
+  vec3 hit = (b - sqrt(disc)) * dir;
   vec3 n = (hit - sphere_center) / radius;
-  vec4 clip = projection * vec4(hit, 1.0);
-  gl_FragDepth = clamp(0.5 * clip.z / clip.w + 0.5, 0.0, 1.0);
   vec3 to_viewer = -dir;
+  float w = -hit.z;
+#else
+  // Parallel rays: the quad offset is the normal's x, y directly.
+  float r2 = dot(corner_offset, corner_offset);
+  if (r2 > 1.0) discard;
+  vec3 n = vec3(corner_offset, sqrt(1.0 - r2));
+  vec3 hit = sphere_center + radius * n;
+  vec3 to_viewer = vec3(0.0, 0.0, 1.0);
+  float w = 1.0;
+#endif
+  gl_FragDepth = clamp(0.5 * (depth_transform.x * hit.z + depth_transform.y) / w + 0.5, 0.0, 1.0);
   vec3 half_vector = normalize(light_direction + to_viewer);
   float lambert = max(dot(n, light_direction), 0.0);
-  float highlight = specular * pow(max(dot(n, half_vector), 0.0), shininess);
+  // x^32 by five squarings: much cheaper than pow() in llvmpipe (see the static_assert).
+  float h = max(dot(n, half_vector), 0.0);
+  h *= h; h *= h; h *= h; h *= h; h *= h;
+  float highlight = specular * h;
   frag_color = vec4(clamp(base_color * (ambient + diffuse * lambert) + highlight, 0.0, 1.0), 1.0);
 }
 )";
 
-unsigned compile(GLenum stage, const char* source) {
+unsigned compile(GLenum stage, const char* source, bool perspective) {
   const GLuint shader = glCreateShader(stage);
-  glShaderSource(shader, 1, &source, nullptr);
+  const char* parts[] = {"#version 330 core\n",
+                         perspective ? "#define PERSPECTIVE 1\n" : "#define PERSPECTIVE 0\n",
+                         source};
+  glShaderSource(shader, 3, parts, nullptr);
   glCompileShader(shader);
   GLint ok = GL_FALSE;
   glGetShaderiv(shader, GL_COMPILE_STATUS, &ok);
@@ -101,29 +120,43 @@ void set_matrix(int location, const Eigen::Matrix4d& m) {
   glUniformMatrix4fv(location, 1, GL_FALSE, f.data());
 }
 
-}  // namespace
-
-SphereImpostorPass::SphereImpostorPass() {
-  const GLuint vs = compile(GL_VERTEX_SHADER, kVertexShader);
-  const GLuint fs = compile(GL_FRAGMENT_SHADER, kFragmentShader);
-  program_ = glCreateProgram();
-  glAttachShader(program_, vs);
-  glAttachShader(program_, fs);
-  glLinkProgram(program_);
+// Compiles and links one variant; the uniforms that never change are set here.
+unsigned link_program(bool perspective) {
+  const GLuint vs = compile(GL_VERTEX_SHADER, kVertexShader, perspective);
+  const GLuint fs = compile(GL_FRAGMENT_SHADER, kFragmentShader, perspective);
+  const GLuint program = glCreateProgram();
+  glAttachShader(program, vs);
+  glAttachShader(program, fs);
+  glLinkProgram(program);
   glDeleteShader(vs);
   glDeleteShader(fs);
   GLint ok = GL_FALSE;
-  glGetProgramiv(program_, GL_LINK_STATUS, &ok);
+  glGetProgramiv(program, GL_LINK_STATUS, &ok);
   if (!ok) {
     char log[2048] = {0};
-    glGetProgramInfoLog(program_, sizeof(log), nullptr, log);
+    glGetProgramInfoLog(program, sizeof(log), nullptr, log);
+    glDeleteProgram(program);
     throw ContextError(std::string("sphere shaders do not link: ") + log);
   }
-  view_location_ = glGetUniformLocation(program_, "view");
-  projection_location_ = glGetUniformLocation(program_, "projection");
-  radius_location_ = glGetUniformLocation(program_, "radius");
-  orthographic_location_ = glGetUniformLocation(program_, "orthographic");
+  glUseProgram(program);
+  glUniform1i(glGetUniformLocation(program, "spheres"), 0);
+  const SphereShading& s = kSphereShading;
+  const Eigen::Vector3f light =
+      Eigen::Vector3d(s.light_direction[0], s.light_direction[1], s.light_direction[2])
+          .normalized()
+          .cast<float>();
+  glUniform3f(glGetUniformLocation(program, "light_direction"), light.x(), light.y(), light.z());
+  glUniform1f(glGetUniformLocation(program, "ambient"), static_cast<float>(s.ambient));
+  glUniform1f(glGetUniformLocation(program, "diffuse"), static_cast<float>(s.diffuse));
+  glUniform1f(glGetUniformLocation(program, "specular"), static_cast<float>(s.specular));
+  return program;
+}
 
+}  // namespace
+
+SphereImpostorPass::SphereImpostorPass() {
+  orthographic_program_ = link_program(false);
+  perspective_program_ = link_program(true);
   // No vertex attributes: everything comes from the buffer texture.
   glGenVertexArrays(1, &vertex_array_);
   glGenBuffers(1, &instance_buffer_);
@@ -132,36 +165,27 @@ SphereImpostorPass::SphereImpostorPass() {
   glBindTexture(GL_TEXTURE_BUFFER, instance_texture_);
   glTexBuffer(GL_TEXTURE_BUFFER, GL_RGBA32UI, instance_buffer_);
   glGetIntegerv(GL_MAX_TEXTURE_BUFFER_SIZE, &max_spheres_);
-
-  glUseProgram(program_);
-  glUniform1i(glGetUniformLocation(program_, "spheres"), 0);
-  const SphereShading& s = kSphereShading;
-  const Eigen::Vector3f light = Eigen::Vector3d(s.light_direction[0], s.light_direction[1],
-                                                s.light_direction[2])
-                                    .normalized()
-                                    .cast<float>();
-  glUniform3f(glGetUniformLocation(program_, "light_direction"), light.x(), light.y(), light.z());
-  glUniform1f(glGetUniformLocation(program_, "ambient"), static_cast<float>(s.ambient));
-  glUniform1f(glGetUniformLocation(program_, "diffuse"), static_cast<float>(s.diffuse));
-  glUniform1f(glGetUniformLocation(program_, "specular"), static_cast<float>(s.specular));
-  glUniform1f(glGetUniformLocation(program_, "shininess"), static_cast<float>(s.shininess));
 }
 
 SphereImpostorPass::~SphereImpostorPass() {
   glDeleteTextures(1, &instance_texture_);
   glDeleteBuffers(1, &instance_buffer_);
   glDeleteVertexArrays(1, &vertex_array_);
-  glDeleteProgram(program_);
+  glDeleteProgram(orthographic_program_);
+  glDeleteProgram(perspective_program_);
 }
 
 void SphereImpostorPass::draw(const std::vector<SphereInstance>& spheres, const Camera& camera,
                               double radius) {
   if (spheres.empty()) return;
-  glUseProgram(program_);
-  set_matrix(view_location_, camera.view_matrix());
-  set_matrix(projection_location_, camera.projection_matrix());
-  glUniform1f(radius_location_, static_cast<float>(radius));
-  glUniform1i(orthographic_location_, camera.is_orthographic() ? 1 : 0);
+  const GLuint program = camera.is_orthographic() ? orthographic_program_ : perspective_program_;
+  glUseProgram(program);
+  const Eigen::Matrix4d projection = camera.projection_matrix();
+  set_matrix(glGetUniformLocation(program, "view"), camera.view_matrix());
+  set_matrix(glGetUniformLocation(program, "projection"), projection);
+  glUniform1f(glGetUniformLocation(program, "radius"), static_cast<float>(radius));
+  glUniform2f(glGetUniformLocation(program, "depth_transform"),
+              static_cast<float>(projection(2, 2)), static_cast<float>(projection(2, 3)));
 
   glBindVertexArray(vertex_array_);
   glActiveTexture(GL_TEXTURE0);

@@ -27,11 +27,10 @@ class SphereImpostorPass {
   void draw(const std::vector<SphereInstance>& spheres, const Camera& camera, double radius);
 
  private:
-  unsigned program_ = 0, vertex_array_ = 0, instance_buffer_ = 0, instance_texture_ = 0;
-  int max_spheres_ = 0;  // texels a buffer texture may hold
+  unsigned orthographic_program_ = 0, perspective_program_ = 0;
+  unsigned vertex_array_ = 0, instance_buffer_ = 0, instance_texture_ = 0;
+  int max_spheres_ = 0;            // texels a buffer texture may hold
   long long buffer_capacity_ = 0;  // bytes allocated in instance_buffer_
-  int view_location_ = -1, projection_location_ = -1, radius_location_ = -1,
-      orthographic_location_ = -1;
 };
 
 }  // namespace washout::render

@@ -16,6 +16,7 @@ void update_marker_velocities(const SphContext& ctx, const NeighborGrid& grid, c
                               const std::vector<std::uint8_t>& active, FluidWork& work) {
   const std::size_t n = p.size();
   for (int a = 0; a < 3; ++a) work.marker_velocity[a].resize(n, 0.0);
+  work.wall_wet.assign(n - p.fluid_count, 0);
 #pragma omp parallel for schedule(dynamic, 256)
   for (std::size_t w = p.fluid_count; w < n; ++w) {
     if (!active[w]) continue;
@@ -29,6 +30,7 @@ void update_marker_velocities(const SphContext& ctx, const NeighborGrid& grid, c
     const double fraction = accumulate_fluid_at(ctx, grid, p, m, [&](std::uint32_t f, double wt) {
       for (int a = 0; a < ctx.dim; ++a) u_m[a] += wt * p.velocity[a][f];
     });
+    work.wall_wet[w - p.fluid_count] = fraction >= kWetFluidFraction;
     if (fraction < kDryFluidFraction) {
       for (int a = 0; a < 3; ++a) work.marker_velocity[a][w] = u_wall[a];
       continue;

@@ -43,6 +43,7 @@ options:
   --range MIN,MAX      fixed colour range (default: from the first frame with any spread)
   --camera PRESET      3D view: perspective (default), side, top; 2D is always the x-y plane
   --supersample S      render at S times the size and average down, 1 to 4 (default 2)
+  --no-cutaway         3D: also draw the walls between the camera and the water
   --video              also make DIR/<run name>.mp4 with ffmpeg, if ffmpeg is installed
   -h, --help           show this help
 
@@ -141,6 +142,8 @@ RenderCommandOptions parse(int argc, char** argv) {
       o.render.range_max = parse_number(name, text.substr(comma + 1));
     } else if (name == "--video") {
       o.video = true;
+    } else if (name == "--no-cutaway") {
+      o.render.cutaway_walls = false;
     } else if (name.rfind("-", 0) == 0 && name.size() > 1) {
       throw UsageError("unknown option " + name);
     } else if (o.run_path.empty()) {
@@ -234,7 +237,8 @@ int render_frames(const RenderCommandOptions& o) {
   std::vector<std::size_t> indices;
   if (o.frame) {
     if (static_cast<unsigned long long>(*o.frame) >= count) {
-      std::fprintf(stderr, "washout render: frame %lld is out of range: %s has %zu frames (0..%zu)\n",
+      std::fprintf(stderr,
+                   "washout render: frame %lld is out of range: %s has %zu frames (0..%zu)\n",
                    *o.frame, o.run_path.c_str(), count, count - 1);
       return kExitBadInput;
     }

@@ -78,9 +78,9 @@ void detect_wall_contacts(std::span<const BodyModel> models, std::span<const Bod
               }
               ws.wall_candidates.push_back({b, w, static_cast<std::int32_t>(i), overlap, normal});
               if (overlap > 0.0) ++touching;
-              summary.frequency2 += step_stiffness(law, overlap, reference * r) *
-                                    inverse_effective_mass(model, inertia_inverse,
-                                                           xi - state.position, normal);
+              summary.frequency2 +=
+                  step_stiffness(law, overlap, reference * r) *
+                  inverse_effective_mass(model, inertia_inverse, xi - state.position, normal);
               ++summary.near;
             }
           },
@@ -97,7 +97,8 @@ void detect_body_contacts(std::span<const BodyModel> models, std::span<const Bod
                           ContactWorkspace& ws) {
   const int bodies = ws.body_count;
   // Bodies that may meet another body before the next detection (bounding spheres).
-  std::vector<std::uint8_t> involved(bodies, 0);
+  std::vector<std::uint8_t>& involved = ws.involved;
+  involved.assign(bodies, 0);
   bool any = false;
   double cutoff = 0.0;
   int dim = 3;
@@ -109,8 +110,8 @@ void detect_body_contacts(std::span<const BodyModel> models, std::span<const Bod
       if (gap >= reach[a] + reach[b]) continue;
       involved[a] = involved[b] = 1;
       any = true;
-      cutoff = std::max(cutoff, models[a].contact_radius + models[b].contact_radius +
-                                    reach[a] + reach[b]);
+      cutoff = std::max(cutoff,
+                        models[a].contact_radius + models[b].contact_radius + reach[a] + reach[b]);
       dim = models[a].dim;
     }
   }
@@ -131,10 +132,11 @@ void detect_body_contacts(std::span<const BodyModel> models, std::span<const Bod
   ws.grid.find_pairs(ws.gathered_position, ws.gathered_body, cutoff, dim, ws.pairs);
 
   const double reference = scene.settings.hertz_reference_overlap;
-  std::vector<Eigen::Matrix3d> inertia_inverse(bodies);
+  std::vector<Eigen::Matrix3d>& inertia_inverse = ws.inertia_inverse;
+  inertia_inverse.resize(bodies);
   for (int b = 0; b < bodies; ++b)
-    if (involved[b]) inertia_inverse[b] = rigid::world_inertia_inverse(models[b],
-                                                                      states[b].orientation);
+    if (involved[b])
+      inertia_inverse[b] = rigid::world_inertia_inverse(models[b], states[b].orientation);
   for (const ParticlePair& p : ws.pairs) {
     int ga = p.i, gb = p.j;
     if (ws.gathered_body[ga] > ws.gathered_body[gb]) std::swap(ga, gb);
@@ -160,11 +162,11 @@ void detect_body_contacts(std::span<const BodyModel> models, std::span<const Bod
     // Both bodies feel this contact: its stiffness over the pair's relative inverse mass.
     double inverse_mass = 0.0;
     if (is_dynamic(ma))
-      inverse_mass += inverse_effective_mass(ma, inertia_inverse[a], xa - states[a].position,
-                                             normal);
+      inverse_mass +=
+          inverse_effective_mass(ma, inertia_inverse[a], xa - states[a].position, normal);
     if (is_dynamic(mb))
-      inverse_mass += inverse_effective_mass(mb, inertia_inverse[b], xb - states[b].position,
-                                             normal);
+      inverse_mass +=
+          inverse_effective_mass(mb, inertia_inverse[b], xb - states[b].position, normal);
     const double f2 =
         step_stiffness(ws.pair_law[a * bodies + b], overlap, reference * ma.contact_radius) *
         inverse_mass;
@@ -256,7 +258,8 @@ void contact_loads(std::span<const BodyModel> models, std::span<const BodyState>
   std::fill(ws.wall_touching.begin(), ws.wall_touching.end(), 0);
   std::fill(ws.pair_touching.begin(), ws.pair_touching.end(), 0);
   for (const WallCandidate& c : ws.wall_candidates)
-    if (touches_during_step(c.overlap, wall_rate(c), h)) ++ws.wall_touching[c.body * walls + c.wall];
+    if (touches_during_step(c.overlap, wall_rate(c), h))
+      ++ws.wall_touching[c.body * walls + c.wall];
   for (const PairCandidate& c : ws.pair_candidates)
     if (touches_during_step(c.overlap, -pair_relative(c).dot(c.normal), h))
       ++ws.pair_touching[c.body_a * bodies + c.body_b];

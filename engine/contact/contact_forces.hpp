@@ -6,6 +6,7 @@
 //                      including particles near enough to touch before the fluid step ends;
 //   contact_loads    - the spring-dashpot forces for a step h, summed into force and torque.
 // All loops are serial and in a fixed order, so the result is deterministic.
+#include <Eigen/Dense>
 #include <cstdint>
 #include <span>
 #include <vector>
@@ -49,8 +50,8 @@ struct PairSpring {
 };
 
 struct BodyContactSummary {
-  int touching = 0;        // particle contacts with overlap > 0
-  int near = 0;            // candidates: touching, or close enough to touch within the reach
+  int touching = 0;         // particle contacts with overlap > 0
+  int near = 0;             // candidates: touching, or close enough to touch within the reach
   double frequency2 = 0.0;  // bound on omega^2 of this body's contact modes [1/s^2]
 };
 
@@ -77,6 +78,8 @@ struct ContactWorkspace {
   std::vector<int> pair_touching;  // [a * bodies + b]
   std::vector<BodyContactSummary> summary;
 
+  std::vector<std::uint8_t> involved;            // [body]: may meet another body
+  std::vector<Eigen::Matrix3d> inertia_inverse;  // [body]: world frame, this sub-step
   ParticlePairGrid grid;
   rigid::Vec3Array gathered_position;
   std::vector<std::int32_t> gathered_body, gathered_particle;

@@ -17,7 +17,7 @@ struct Material {
 // mean of the two materials' values, which is the value itself for a pair of one material).
 class MaterialTable {
  public:
-  int add(const Material& material);  // returns its id
+  int add(const Material& material);        // returns its id
   int find(const std::string& name) const;  // id, or -1
   const Material& material(int id) const { return materials_.at(id); }
   int size() const { return static_cast<int>(materials_.size()); }

@@ -37,8 +37,8 @@ double reach(const BodyModel& model, const BodyState& state, const BodyLoad& flu
 // Contact sub-stepping, METHOD.md Contact (see the header for the rule).
 SubstepReport advance_bodies(std::span<const BodyModel> models, std::span<BodyState> states,
                              std::span<const BodyLoad> fluid_loads, const ContactScene& scene,
-                             ContactWorkspace& ws, const Vec3& gravity, double t,
-                             double dt_fluid, const rigid::IntegratorOptions& options) {
+                             ContactWorkspace& ws, const Vec3& gravity, double t, double dt_fluid,
+                             const rigid::IntegratorOptions& options) {
   const std::size_t bodies = models.size();
   if (states.size() != bodies || fluid_loads.size() != bodies)
     throw std::invalid_argument("advance_bodies: models, states and loads differ in number");

@@ -14,7 +14,7 @@
 namespace washout::contact {
 
 struct SubstepReport {
-  long substeps = 0;          // 1 when nothing touched or came near: no sub-stepping
+  long substeps = 0;           // 1 when nothing touched or came near: no sub-stepping
   double smallest_step = 0.0;  // [s]
   int most_touching = 0;       // most particle contacts of one body at one sub-step
   std::vector<rigid::BodyLoad> contact_load;  // per body, time average over the fluid step

@@ -39,8 +39,7 @@ bool touches_during_step(double overlap, double overlap_rate, double dt) {
 // DEM spring-dashpot contact, METHOD.md Contact:
 //   F_n = -(k_n delta_n + c_n d(delta_n)/dt) n       (n there points into the partner)
 //   F_s = -min(mu |F_n|, |k_s delta_s + c_s d(delta_s)/dt|) s_hat,   c_s = c_n
-Vec3 spring_dashpot_force(const PairLaw& law, const ContactKinematics& c, double dt,
-                          Vec3& spring) {
+Vec3 spring_dashpot_force(const PairLaw& law, const ContactKinematics& c, double dt, Vec3& spring) {
   const bool hertz = law.law == ContactLaw::kHertz;
   const double power = hertz ? 1.5 : 1.0;  // spring force ~ delta^power
 

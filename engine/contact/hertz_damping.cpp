@@ -48,7 +48,10 @@ double hertz_damping_factor(double restitution) {
   while (hertz_restitution(high) > restitution) high *= 2.0;
   while (high - low > 1e-10 * high) {
     const double mid = 0.5 * (low + high);
-    if (hertz_restitution(mid) > restitution) low = mid; else high = mid;
+    if (hertz_restitution(mid) > restitution)
+      low = mid;
+    else
+      high = mid;
   }
   return 0.5 * (low + high);
 }

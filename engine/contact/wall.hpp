@@ -5,11 +5,10 @@
 // bumps. Penetration of a body particle of radius r at x: delta = r - sdf(x), normal grad sdf.
 // Shapes are plain structs; the per-particle loop is compiled once per shape type (std::visit
 // outside the loop), so there is no virtual call per particle except for SignedDistanceWall.
+#include <Eigen/Dense>
 #include <functional>
 #include <string>
 #include <variant>
-
-#include <Eigen/Dense>
 
 #include "engine/core/vec3.hpp"
 

@@ -50,7 +50,7 @@ double correct_and_advect(const SphContext& ctx, const NeighborList& list, Parti
     Eigen::Matrix3d L;
     const bool corrected = surface && gradient_correction_matrix(ctx, list, p, i, L);
     const double sign_i = (symmetric_gradient && !corrected) ? 1.0 : -1.0;  // P_i + P_j or P_j - P_i
-    double grad[3] = {0, 0, 0};
+    double grad[3] = {0, 0, 0}, wall_grad[3] = {0, 0, 0};
     const double Pi = p.pressure[i];
     for (std::uint64_t k = list.offset[i]; k < list.offset[i + 1]; ++k) {
       const std::size_t j = list.index[k];
@@ -60,13 +60,14 @@ double correct_and_advect(const SphContext& ctx, const NeighborList& list, Parti
       const double Pj =
           j < n ? p.pressure[j] : Pi + wall_pressure_jump(ctx, p, work, gravity, i, j, d, dt);
       const double f = g_scale * ctx.kernel.derivative_over_r(r) * (Pj + sign_i * Pi);
-      for (int a = 0; a < ctx.dim; ++a) grad[a] += f * d[a];
+      double* target = (corrected && j >= n) ? wall_grad : grad;
+      for (int a = 0; a < ctx.dim; ++a) target[a] += f * d[a];
     }
     if (corrected) {
       // L already normalises the sum: undo the lattice normalisation before applying it.
       const Eigen::Vector3d g =
           L * Eigen::Vector3d(grad[0], grad[1], grad[2]) / ctx.gradient_correction;
-      for (int a = 0; a < ctx.dim; ++a) grad[a] = g[a];
+      for (int a = 0; a < ctx.dim; ++a) grad[a] = g[a] + wall_grad[a];
     }
     for (int a = 0; a < ctx.dim; ++a)
       p.velocity[a][i] = work.u_star[a][i] - dt / ctx.rho0 * grad[a];

@@ -30,5 +30,8 @@ double accumulate_fluid_at(const SphContext& ctx, const NeighborGrid& grid, cons
 
 // Below this fluid fraction a point is dry: interpolated values there are not trusted.
 constexpr double kDryFluidFraction = 0.05;
+// A boundary particle whose mirror point holds less than this fluid fraction stands above the
+// free surface: it takes no part in the pressure equation (it faces air, not water).
+constexpr double kWetFluidFraction = 0.5;
 
 }  // namespace washout

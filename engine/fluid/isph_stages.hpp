@@ -67,4 +67,8 @@ double correct_and_advect(const SphContext& ctx, const NeighborList& list, Parti
                           const FluidWork& work, const Vec3& gravity, double dt,
                           bool symmetric_gradient);
 
+// Optional Fickian particle shifting after the position update (particle_shifting.cpp).
+void shift_particles(const SphContext& ctx, const NeighborList& list, Particles& p,
+                     const FluidWork& work, double coefficient, std::vector<double>& scratch);
+
 }  // namespace washout

@@ -83,6 +83,9 @@ const std::vector<ParameterInfo>& ParameterSet::engine_table() {
       {"pressure_gradient", "-",
        "corrector gradient: \"symmetric\" (momentum-conserving) or \"difference\"",
        std::string("symmetric")},
+      {"shifting", "-",
+       "particle shifting coefficient A (delta r = -A h^2 grad C, Lind et al. 2012); 0 = off",
+       0.0},
       {"output_interval", "s", "simulated time between output frames", 0.05},
       {"max_speed", "m/s", "a faster particle stops the run as unstable; 0 = 10 sqrt(2 g L)", 0.0},
       {"periodic", "-", "periodic axes, e.g. \"x\" (needs domain_min and domain_max)",
@@ -292,6 +295,7 @@ SimulationParameters SimulationParameters::from(const ParameterSet& set) {
   p.solver_tolerance = positive("solver_tolerance");
   p.solver_max_iterations = integer("solver_max_iterations", positive("solver_max_iterations"));
   p.pressure_gradient = one_of("pressure_gradient", {"symmetric", "difference"});
+  p.shifting = non_negative("shifting");
   p.output_interval = positive("output_interval");
   p.max_speed = non_negative("max_speed");
   p.periodic = set.text("periodic");

@@ -85,6 +85,7 @@ struct SimulationParameters {
   double solver_tolerance = 1e-8;
   int solver_max_iterations = 5000;
   std::string pressure_gradient = "symmetric";
+  double shifting = 0.0;
   double output_interval = 0.05;
   double max_speed = 0.0;  // 0: automatic from gravity and domain size
   std::string periodic;    // axes, e.g. "x"

@@ -2,12 +2,11 @@
 // What a rigid body is, fixed for a whole run (the "model" half of the model/state split):
 // its particles' offsets from the centre of mass, mass, inertia, surface description and how it
 // moves (METHOD.md Rigid bodies). The part that changes every step is BodyState.
+#include <Eigen/Dense>
 #include <cstdint>
 #include <functional>
 #include <string>
 #include <vector>
-
-#include <Eigen/Dense>
 
 #include "engine/core/vec3.hpp"
 #include "engine/rigid/vec3_array.hpp"
@@ -53,13 +52,13 @@ struct BodyParticles {
 struct BodyModel {
   std::string name;
   int dim = 3;
-  double spacing = 0.0;          // d0 [m]
-  double contact_radius = 0.0;   // r = d0/2 [m], METHOD.md Contact
-  double particle_mass = 0.0;    // [kg]
-  double mass = 0.0;             // M [kg]
+  double spacing = 0.0;                // d0 [m]
+  double contact_radius = 0.0;         // r = d0/2 [m], METHOD.md Contact
+  double particle_mass = 0.0;          // [kg]
+  double mass = 0.0;                   // M [kg]
   Vec3 centre_of_mass = Vec3::Zero();  // in the reference pose [m]
-  Vec3Array offset;              // r0_i = x_i(reference) - centre_of_mass, all particles
-  double bounding_radius = 0.0;  // max |r0_i| + r: a sphere about X holding every particle
+  Vec3Array offset;                    // r0_i = x_i(reference) - centre_of_mass, all particles
+  double bounding_radius = 0.0;        // max |r0_i| + r: a sphere about X holding every particle
   Eigen::Matrix3d inertia = Eigen::Matrix3d::Zero();  // body frame, about the centre of mass
   Eigen::Matrix3d inertia_inverse = Eigen::Matrix3d::Zero();  // 2D: only (2,2) is used
   // Principal frame (3D): inertia = axes * diag(moments) * axes^T, axes a proper rotation.

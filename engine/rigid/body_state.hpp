@@ -11,7 +11,7 @@
 namespace washout::rigid {
 
 struct BodyState {
-  Vec3 position = Vec3::Zero();  // X: centre of mass, world [m]
+  Vec3 position = Vec3::Zero();                                     // X: centre of mass, world [m]
   Eigen::Quaterniond orientation = Eigen::Quaterniond::Identity();  // q: body -> world, unit
   Vec3 velocity = Vec3::Zero();          // T: centre-of-mass velocity [m/s]
   Vec3 angular_velocity = Vec3::Zero();  // w: world frame [rad/s]; 2D: (0, 0, w_z)

@@ -8,8 +8,7 @@ Eigen::Quaterniond quaternion_from_rotation_vector(const Vec3& phi) {
   const double angle2 = phi.squaredNorm();
   const double angle = std::sqrt(angle2);
   // sin(a/2)/a, by its Taylor series where the quotient would lose digits.
-  const double sinc_half =
-      angle < 1e-4 ? 0.5 - angle2 / 48.0 : std::sin(0.5 * angle) / angle;
+  const double sinc_half = angle < 1e-4 ? 0.5 - angle2 / 48.0 : std::sin(0.5 * angle) / angle;
   Eigen::Quaterniond q(std::cos(0.5 * angle), sinc_half * phi.x(), sinc_half * phi.y(),
                        sinc_half * phi.z());
   return q.normalized();

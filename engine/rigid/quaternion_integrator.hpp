@@ -1,9 +1,8 @@
 #pragma once
 // Orientation update with a world-frame angular velocity held constant over one step
 // (METHOD.md Rigid bodies, the q^{n+1} line).
-#include <cstdint>
-
 #include <Eigen/Geometry>
+#include <cstdint>
 
 #include "engine/core/vec3.hpp"
 

@@ -196,6 +196,10 @@ StepReport Simulation::step_until(double until) {
     max_speed_ = correct_and_advect(ctx_, neighbors_, particles_, work_, prm.gravity, dt,
                                     prm.pressure_gradient == "symmetric");
   }
+  if (prm.shifting > 0) {
+    auto s = timer_.measure("shifting");
+    shift_particles(ctx_, neighbors_, particles_, work_, prm.shifting, shift_scratch_);
+  }
   for (auto& wall : moving_walls_) set_wall_position(wall, particles_);
   time_ = t_new;
   ++step_;

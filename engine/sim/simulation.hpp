@@ -129,6 +129,7 @@ class Simulation {
   std::vector<MovingWall> moving_walls_;
   std::vector<std::uint8_t> active_boundary_;
   std::vector<std::uint8_t> inside_wall_;
+  std::vector<double> shift_scratch_;
   StageTimer timer_;
   double time_ = 0.0;
   long step_ = 0;

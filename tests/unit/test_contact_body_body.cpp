@@ -98,8 +98,8 @@ long run(Collision& c, int max_steps) {
   long most = 0;
   bool touched = false;
   for (int n = 0; n < max_steps; ++n) {
-    const SubstepReport report = advance_bodies(c.models, c.states, fluid, c.scene, workspace,
-                                                Vec3::Zero(), n * 1e-3, 1e-3);
+    const SubstepReport report =
+        advance_bodies(c.models, c.states, fluid, c.scene, workspace, Vec3::Zero(), n * 1e-3, 1e-3);
     most = std::max(most, report.substeps);
     if (report.most_touching > 0) touched = true;
     if (touched && report.substeps == 1) break;
@@ -123,10 +123,11 @@ TEST(ContactBodyBody, HeadOnCollisionConservesMomentumAndGivesEps) {
           (after.momentum - before.momentum).norm() / (c.models[0].mass * 1.0);
       const double zeta = damping_ratio(eps), omega_h = std::numbers::pi / 20;
       const double budget = std::numbers::pi * zeta * zeta * omega_h + omega_h * omega_h;
-      std::printf("%dD head-on, eps %.2f: restitution %.4f (error %+.2e, budget %.1e), "
-                  "momentum error %.1e, spin %.1e rad/s, %ld sub-steps/ms\n",
-                  dim, eps, rebound / approach, rebound / (approach * eps) - 1, budget,
-                  momentum_error, c.states[0].angular_velocity.norm(), substeps);
+      std::printf(
+          "%dD head-on, eps %.2f: restitution %.4f (error %+.2e, budget %.1e), "
+          "momentum error %.1e, spin %.1e rad/s, %ld sub-steps/ms\n",
+          dim, eps, rebound / approach, rebound / (approach * eps) - 1, budget, momentum_error,
+          c.states[0].angular_velocity.norm(), substeps);
       EXPECT_LT(momentum_error, 1e-12);
       EXPECT_NEAR(rebound / (approach * eps), 1.0, budget);
       EXPECT_LT(c.states[0].angular_velocity.norm(), 1e-9);
@@ -148,15 +149,33 @@ TEST(ContactBodyBody, GlancingCollisionWithFrictionConservesMomenta) {
     const Totals after = totals(c);
     const double p_error = (after.momentum - before.momentum).norm() / before.momentum.norm();
     const double l_error = (after.angular - before.angular).norm() / before.angular.norm();
-    std::printf("%dD glancing, mu 0.3: momentum error %.1e, angular momentum error %.1e, "
-                "energy %.4f -> %.4f J, spin of body 2 %.2f rad/s\n",
-                dim, p_error, l_error, before.energy, after.energy,
-                c.states[1].angular_velocity.norm());
+    std::printf(
+        "%dD glancing, mu 0.3: momentum error %.1e, angular momentum error %.1e, "
+        "energy %.4f -> %.4f J, spin of body 2 %.2f rad/s\n",
+        dim, p_error, l_error, before.energy, after.energy, c.states[1].angular_velocity.norm());
     EXPECT_LT(p_error, 1e-12);
     EXPECT_LT(l_error, 1e-12);
     EXPECT_LT(after.energy, before.energy);
     EXPECT_GT(c.states[1].angular_velocity.norm(), 0.1);  // friction did act
   }
+}
+
+// A cube hitting a fixed body (a fixed body is infinitely heavy: the reduced mass is the cube's
+// own) rebounds with eps, within the same budget; the fixed body does not move.
+TEST(ContactBodyBody, BounceOffAFixedBody) {
+  const double eps = 0.8;
+  Collision c = head_on(3, eps, 0.0);
+  c.models[1].motion = rigid::MotionKind::kFixed;
+  c.states[1].velocity.setZero();
+  const Vec3 fixed_at = c.states[1].position;
+  run(c, 20);
+  const double e = -c.states[0].velocity.x() / 1.0;
+  const double zeta = damping_ratio(eps), omega_h = std::numbers::pi / 20;
+  const double budget = std::numbers::pi * zeta * zeta * omega_h + omega_h * omega_h;
+  std::printf("cube on a fixed body, eps %.2f: restitution %.4f (error %+.2e, budget %.1e)\n", eps,
+              e, e / eps - 1, budget);
+  EXPECT_NEAR(e / eps, 1.0, budget);
+  EXPECT_EQ(c.states[1].position, fixed_at);
 }
 
 }  // namespace

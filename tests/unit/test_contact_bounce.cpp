@@ -96,10 +96,11 @@ TEST(ContactBounce, RestitutionMatchesEpsIn2DAnd3D) {
       fine.steps_per_contact = 80;
       const BounceResult r = impact(sphere(dim), ContactSettings{}, eps, 5e7);
       const BounceResult f = impact(sphere(dim), fine, eps, 5e7);
-      std::printf("%dD eps %.2f: measured %.4f (error %+.2e, budget %.1e; %ld sub-steps/ms, "
-                  "%d touching); at 80 steps/contact %.4f (error %+.2e)\n",
-                  dim, eps, r.restitution, r.restitution / eps - 1, tolerance(eps, 20),
-                  r.most_substeps, r.touching, f.restitution, f.restitution / eps - 1);
+      std::printf(
+          "%dD eps %.2f: measured %.4f (error %+.2e, budget %.1e; %ld sub-steps/ms, "
+          "%d touching); at 80 steps/contact %.4f (error %+.2e)\n",
+          dim, eps, r.restitution, r.restitution / eps - 1, tolerance(eps, 20), r.most_substeps,
+          r.touching, f.restitution, f.restitution / eps - 1);
       EXPECT_NEAR(r.restitution / eps, 1.0, tolerance(eps, 20));
       EXPECT_NEAR(f.restitution / eps, 1.0, 0.01);
       EXPECT_GT(r.touching, 1);  // the lattice ball lands on a flat layer of particles
@@ -113,19 +114,19 @@ TEST(ContactBounce, RestitutionMatchesEpsIn2DAnd3D) {
 // 2 zeta sqrt(M k) have damping ratio sqrt(N) zeta, so e = exp(-pi sqrt(N) zeta/...): checked
 // against that prediction within the same budget.
 TEST(ContactBounce, FlatLandingOfManyParticles) {
-  const BodyModel box =
-      rigid::make_body_model(rigid::lattice_box(3, 0.005, Vec3(-0.05, -0.025, -0.01),
-                                                Vec3(0.05, 0.025, 0.01), 1000.0));
+  const BodyModel box = rigid::make_body_model(
+      rigid::lattice_box(3, 0.005, Vec3(-0.05, -0.025, -0.01), Vec3(0.05, 0.025, 0.01), 1000.0));
   const double eps = 0.95;
   const BounceResult shared = impact(box, ContactSettings{}, eps, 5e7);
   ContactSettings whole;
   whole.damping_mass = DampingMass::kWholeBody;
   const BounceResult literal = impact(box, whole, eps, 5e7);
   const double predicted = linear_restitution(std::sqrt(literal.touching) * damping_ratio(eps));
-  std::printf("flat box on %d particles, eps %.2f: shared mass e = %.4f (error %+.2e); "
-              "whole-body mass e = %.4f (predicted sqrt(N) zeta: %.4f)\n",
-              shared.touching, eps, shared.restitution, shared.restitution / eps - 1,
-              literal.restitution, predicted);
+  std::printf(
+      "flat box on %d particles, eps %.2f: shared mass e = %.4f (error %+.2e); "
+      "whole-body mass e = %.4f (predicted sqrt(N) zeta: %.4f)\n",
+      shared.touching, eps, shared.restitution, shared.restitution / eps - 1, literal.restitution,
+      predicted);
   EXPECT_EQ(shared.touching, 200);
   EXPECT_NEAR(shared.restitution / eps, 1.0, tolerance(eps, 20));
   EXPECT_NEAR(literal.restitution / predicted, 1.0, tolerance(0.5, 20));
@@ -148,8 +149,8 @@ TEST(ContactBounce, HertzRestitutionIsIndependentOfSpeed) {
       ContactWorkspace workspace;
       long substeps = 0;
       for (int n = 0; n < 20; ++n) {
-        const SubstepReport report = advance_bodies(models, states, fluid, f.scene, workspace,
-                                                    Vec3::Zero(), n * 1e-3, 1e-3);
+        const SubstepReport report =
+            advance_bodies(models, states, fluid, f.scene, workspace, Vec3::Zero(), n * 1e-3, 1e-3);
         substeps = std::max(substeps, report.substeps);
         if (report.substeps == 1 && states[0].velocity.z() > 0.0) break;
       }
@@ -203,8 +204,8 @@ TEST(ContactBounce, ApexHeightsUnderGravity) {
   for (int k = 1; k <= 3; ++k) {
     const double exact = std::pow(eps, 2 * k) * kH0;
     const double error = apex[k - 1] / exact - 1;
-    std::printf("apex %d: %.5f m, analytic e^%d h0 = %.5f m, error %+.2e\n", k, apex[k - 1],
-                2 * k, exact, error);
+    std::printf("apex %d: %.5f m, analytic e^%d h0 = %.5f m, error %+.2e\n", k, apex[k - 1], 2 * k,
+                exact, error);
     EXPECT_NEAR(error, 0.0, 2 * k * tolerance(eps, 20) + 1e-3);
   }
 }

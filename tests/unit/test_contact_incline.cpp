@@ -20,17 +20,17 @@ using rigid::BodyState;
 constexpr double kG = 9.81;
 
 struct Slide {
-  double acceleration = 0.0;  // fitted, down the slope [m/s^2]
-  double creep = 0.0;         // largest distance along the slope moved after 0.1 s [m]
+  double acceleration = 0.0;   // fitted, down the slope [m/s^2]
+  double creep = 0.0;          // largest distance along the slope moved after 0.1 s [m]
   double static_spring = 0.0;  // M g sin(theta) / (N k_s): the tangential springs' stretch [m]
-  double rotation = 0.0;      // largest rotation from the start [rad]
+  double rotation = 0.0;       // largest rotation from the start [rad]
 };
 
 // A 0.1 x 0.05 x 0.02 m box (d0 = 5 mm; 2D: 0.1 x 0.02) on a plane tilted by theta; E = 1e6 Pa
 // (1e8 Pa in 2D, where the mass per metre is 20 times larger, so that the contact settles in
-// ~3 ms in both) keeps the test fast (the law does not depend on it). Duration 0.3 s, fluid steps of 1 ms.
-// The acceleration is the least-squares quadratic fit of the distance along the slope after
-// 20 ms (the initial settling of the normal contact).
+// ~3 ms in both) keeps the test fast (the law does not depend on it). Duration 0.3 s, fluid steps
+// of 1 ms. The acceleration is the least-squares quadratic fit of the distance along the slope
+// after 20 ms (the initial settling of the normal contact).
 Slide incline(int dim, double theta_degrees, double mu, int steps = 300) {
   const double theta = theta_degrees * std::numbers::pi / 180.0;
   const Vec3 size(0.1, dim == 3 ? 0.05 : 0.02, dim == 3 ? 0.02 : 0.0);
@@ -69,13 +69,20 @@ Slide incline(int dim, double theta_degrees, double mu, int steps = 300) {
     touching = std::max(touching, report.most_touching);
     const double t = (n + 1) * dt;
     const double s = (states[0].position - start).dot(downhill);
-    result.rotation =
-        std::max(result.rotation, states[0].orientation.angularDistance(tilt));
-    if (t < 0.1) settled = s;
-    else result.creep = std::max(result.creep, std::abs(s - settled));
+    result.rotation = std::max(result.rotation, states[0].orientation.angularDistance(tilt));
+    if (t < 0.1)
+      settled = s;
+    else
+      result.creep = std::max(result.creep, std::abs(s - settled));
     if (t < 0.02) continue;
-    s0 += 1; s1 += t; s2 += t * t; s3 += t * t * t; s4 += t * t * t * t;
-    y0 += s; y1 += s * t; y2 += s * t * t;
+    s0 += 1;
+    s1 += t;
+    s2 += t * t;
+    s3 += t * t * t;
+    s4 += t * t * t * t;
+    y0 += s;
+    y1 += s * t;
+    y2 += s * t * t;
   }
   Eigen::Matrix3d normal_matrix;
   normal_matrix << s0, s1, s2, s1, s2, s3, s2, s3, s4;
@@ -90,14 +97,15 @@ Slide incline(int dim, double theta_degrees, double mu, int steps = 300) {
 // so only the settling transient and rounding remain: tolerance 0.5 % of a (measured ~1e-4).
 TEST(ContactIncline, SlidesWithCoulombAcceleration) {
   for (int dim : {3, 2}) {
-    for (const auto& [theta, mu] : {std::pair{30.0, 0.2}, std::pair{30.0, 0.0},
-                                    std::pair{20.0, 0.05}}) {
+    for (const auto& [theta, mu] :
+         {std::pair{30.0, 0.2}, std::pair{30.0, 0.0}, std::pair{20.0, 0.05}}) {
       const Slide s = incline(dim, theta, mu);
       const double th = theta * std::numbers::pi / 180.0;
       const double exact = kG * (std::sin(th) - mu * std::cos(th));
-      std::printf("%dD, theta %.0f deg, mu %.2f: a = %.5f m/s^2, analytic %.5f, error %+.2e, "
-                  "rotation %.1e rad\n",
-                  dim, theta, mu, s.acceleration, exact, s.acceleration / exact - 1, s.rotation);
+      std::printf(
+          "%dD, theta %.0f deg, mu %.2f: a = %.5f m/s^2, analytic %.5f, error %+.2e, "
+          "rotation %.1e rad\n",
+          dim, theta, mu, s.acceleration, exact, s.acceleration / exact - 1, s.rotation);
       EXPECT_NEAR(s.acceleration / exact, 1.0, 5e-3);
       EXPECT_LT(s.rotation, 1e-3);  // it slides flat, without tipping
     }
@@ -114,10 +122,11 @@ TEST(ContactIncline, SticksBelowTheFrictionAngle) {
     const Slide s = incline(dim, 10.0, 0.3);
     const Slide longer = incline(dim, 10.0, 0.3, 1000);
     EXPECT_LT(longer.creep, 0.01 * s.static_spring);
-    std::printf("%dD, theta 10 deg, mu 0.30 (tan theta = %.3f): creep after settling %.2e m "
-                "(over 0.9 s: %.2e m), spring stretch %.2e m, fitted a = %.1e m/s^2\n",
-                dim, std::tan(10.0 * std::numbers::pi / 180.0), s.creep, longer.creep,
-                s.static_spring, s.acceleration);
+    std::printf(
+        "%dD, theta 10 deg, mu 0.30 (tan theta = %.3f): creep after settling %.2e m "
+        "(over 0.9 s: %.2e m), spring stretch %.2e m, fitted a = %.1e m/s^2\n",
+        dim, std::tan(10.0 * std::numbers::pi / 180.0), s.creep, longer.creep, s.static_spring,
+        s.acceleration);
     EXPECT_LT(s.creep, 0.01 * s.static_spring);
   }
 }

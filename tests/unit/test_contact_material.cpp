@@ -87,8 +87,10 @@ TEST(ContactMaterial, HertzDampingInversion) {
   for (double eps : {0.3, 0.5, 0.8, 0.95}) {
     const double alpha = hertz_damping_factor(eps);
     const double check = restitution_by_euler(alpha);
-    std::printf("Hertz-Tsuji: eps %.2f needs alpha %.4f (linear 2 zeta = %.4f); independent "
-                "integration gives eps %.5f\n", eps, alpha, 2 * damping_ratio(eps), check);
+    std::printf(
+        "Hertz-Tsuji: eps %.2f needs alpha %.4f (linear 2 zeta = %.4f); independent "
+        "integration gives eps %.5f\n",
+        eps, alpha, 2 * damping_ratio(eps), check);
     EXPECT_NEAR(hertz_restitution(alpha), eps, 1e-6);
     EXPECT_NEAR(check, eps, 5e-4);
   }

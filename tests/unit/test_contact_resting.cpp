@@ -69,20 +69,21 @@ void expect_rest(int dim) {
     substeps = std::max(substeps, report.substeps);
     const double k = workspace.wall_law[0].normal_stiffness;
     const double overlap = weight / (touching * k);
-    max_offset = std::max(
-        max_offset, std::abs(r.touching_height - s.position.dot(r.up) - overlap) / overlap);
+    max_offset = std::max(max_offset,
+                          std::abs(r.touching_height - s.position.dot(r.up) - overlap) / overlap);
     max_drift = std::max(max_drift, (s.position - s.position.dot(r.up) * r.up).norm());
     max_angle = std::max(max_angle, Eigen::AngleAxisd(s.orientation).angle());
     max_speed = std::max(max_speed, s.velocity.norm());
     max_spin = std::max(max_spin, s.angular_velocity.norm());
-    max_force_error = std::max(
-        max_force_error, (report.contact_load[0].force - weight * r.up).norm() / weight);
+    max_force_error =
+        std::max(max_force_error, (report.contact_load[0].force - weight * r.up).norm() / weight);
   }
-  std::printf("%dD box at rest, %d particles touching, %ld sub-steps per 1 ms: overlap error "
-              "%.1e, drift %.1e m, rotation %.1e rad, speed %.1e m/s, spin %.1e rad/s, "
-              "|F_c - Mg|/Mg %.1e\n",
-              dim, touching, substeps, max_offset, max_drift, max_angle, max_speed, max_spin,
-              max_force_error);
+  std::printf(
+      "%dD box at rest, %d particles touching, %ld sub-steps per 1 ms: overlap error "
+      "%.1e, drift %.1e m, rotation %.1e rad, speed %.1e m/s, spin %.1e rad/s, "
+      "|F_c - Mg|/Mg %.1e\n",
+      dim, touching, substeps, max_offset, max_drift, max_angle, max_speed, max_spin,
+      max_force_error);
   EXPECT_EQ(touching, dim == 3 ? 200 : 20);
   EXPECT_LT(max_offset, 1e-6);
   EXPECT_LT(max_drift, 1e-12);
@@ -132,16 +133,18 @@ TEST(ContactResting, PaperGirderSubsteps) {
       least = std::min(least, report.substeps);
       touching = report.most_touching;
       if (n >= 2)
-        force_error = std::max(force_error,
-                               (report.contact_load[0].force - weight * r.up).norm() / weight);
+        force_error =
+            std::max(force_error, (report.contact_load[0].force - weight * r.up).norm() / weight);
     }
     const double k_s = workspace.wall_law[0].tangential_stiffness;
-    const double lowest = 20.0 * dt / (std::numbers::pi * std::sqrt(r.model.mass / (touching * k_s)));
-    std::printf("PLA girder (M = %.4f kg) on %s: %d particles touching, %ld-%ld sub-steps per "
-                "0.5 ms fluid step (sub-step %.2e s; N k_s/M alone would give %.0f); "
-                "|F_c - Mg|/Mg %.1e\n",
-                r.model.mass, on_pier ? "a 5 cm pier" : "the floor", touching, least, most,
-                dt / most, lowest, force_error);
+    const double lowest =
+        20.0 * dt / (std::numbers::pi * std::sqrt(r.model.mass / (touching * k_s)));
+    std::printf(
+        "PLA girder (M = %.4f kg) on %s: %d particles touching, %ld-%ld sub-steps per "
+        "0.5 ms fluid step (sub-step %.2e s; N k_s/M alone would give %.0f); "
+        "|F_c - Mg|/Mg %.1e\n",
+        r.model.mass, on_pier ? "a 5 cm pier" : "the floor", touching, least, most, dt / most,
+        lowest, force_error);
     EXPECT_EQ(touching, on_pier ? 60 : 360);
     EXPECT_GE(static_cast<double>(least), lowest);
     EXPECT_LT(force_error, 1e-7);

@@ -44,8 +44,8 @@ TEST(ContactWall, BoxObstacleFacesEdgesCornersAndInside) {
   EXPECT_LT((n - Vec3(0.6, 0.8, 0)).norm(), 1e-15);
   EXPECT_NEAR(signed_distance(box, Vec3(1, 2, 2.95), &n), -0.05, 1e-15);  // inside, near bottom
   EXPECT_LT((n + Vec3::UnitZ()).norm(), 1e-15);
-  for (const Vec3& x : {Vec3(1.1, 2.05, 3.4), Vec3(1.9, 2.5, 3.3), Vec3(0.2, 1.0, 2.0),
-                        Vec3(1.2, 2.0, 3.05)})
+  for (const Vec3& x :
+       {Vec3(1.1, 2.05, 3.4), Vec3(1.9, 2.5, 3.3), Vec3(0.2, 1.0, 2.0), Vec3(1.2, 2.0, 3.05)})
     expect_normal_is_gradient(box, x);
   // Rotated by 90 degrees about z: x and y extents swap.
   box.rotation = Eigen::AngleAxisd(std::numbers::pi / 2, Vec3::UnitZ()).toRotationMatrix();

@@ -70,9 +70,11 @@ StoredFrame column_2d(double time) {
             {time * (1.0 + i), -time}, 9810.0 * (8 - j) * d);
     }
   }
-  for (int i = -3; i < 25; ++i) f.add(ParticleKind::FixedWall, {(i + 0.5) * d, -0.5 * d}, {0, 0}, 0);
+  for (int i = -3; i < 25; ++i)
+    f.add(ParticleKind::FixedWall, {(i + 0.5) * d, -0.5 * d}, {0, 0}, 0);
   for (int i = 0; i < 3; ++i) {
-    for (int j = 0; j < 3; ++j) f.add(ParticleKind::RigidBody, {0.18 + i * d, 0.02 + j * d}, {0, 0}, 0);
+    for (int j = 0; j < 3; ++j)
+      f.add(ParticleKind::RigidBody, {0.18 + i * d, 0.02 + j * d}, {0, 0}, 0);
   }
   return f;
 }
@@ -218,8 +220,8 @@ TEST(RenderCommand, WritesEveryFrameNumberedByIndex) {
   const auto names = png_names(out);
   std::printf("exit %d, wrote: %s\n", status, joined(names).c_str());
   EXPECT_EQ(status, 0);
-  EXPECT_EQ(names, (std::vector<std::string>{"frame_000000.png", "frame_000001.png",
-                                             "frame_000002.png"}));
+  EXPECT_EQ(names,
+            (std::vector<std::string>{"frame_000000.png", "frame_000001.png", "frame_000002.png"}));
   const PngInfo png = read_png(out / "frame_000002.png");
   std::printf("frame_000002.png: %dx%d, readable %d\n", png.width, png.height, png.ok);
   EXPECT_TRUE(png.ok);
@@ -233,8 +235,8 @@ TEST(RenderCommand, EveryFrameAndDefaultFolder) {
   const fs::path default_out = run_file.parent_path() / "frames";
   const auto every = png_names(default_out);
   std::printf("--every 2 wrote into %s: %s\n", default_out.c_str(), joined(every).c_str());
-  EXPECT_EQ(every, (std::vector<std::string>{"frame_000000.png", "frame_000002.png",
-                                             "frame_000004.png"}));
+  EXPECT_EQ(every,
+            (std::vector<std::string>{"frame_000000.png", "frame_000002.png", "frame_000004.png"}));
   const fs::path single = run_file.parent_path() / "single";
   EXPECT_EQ(run({run_file.string(), "--frame", "3", "--out", single.string(), "--width", "200",
                  "--height", "120"}),
@@ -264,8 +266,8 @@ TEST(RenderCommand, StridedRunFileViewDrawsTheSameImageAsMemory) {
   for (std::size_t i = 0; i < direct.bytes().size() && i < from_file.rgb.size(); ++i) {
     differing += direct.bytes()[i] != from_file.rgb[i];
   }
-  std::printf("3D side view through the command vs in memory: %zu of %zu bytes differ\n",
-              differing, direct.bytes().size());
+  std::printf("3D side view through the command vs in memory: %zu of %zu bytes differ\n", differing,
+              direct.bytes().size());
   ASSERT_TRUE(from_file.ok);
   EXPECT_EQ(from_file.rgb.size(), direct.bytes().size());
   EXPECT_EQ(differing, 0u);
@@ -311,8 +313,8 @@ TEST(RenderCommand, UnwritableOutputExitsWithThree) {
   // The image's own path is taken by a folder: the PNG itself cannot be written.
   const fs::path taken = run_file.parent_path() / "taken";
   fs::create_directories(taken / "frame_000000.png");
-  const int png_status = run({run_file.string(), "--out", taken.string(), "--width", "200",
-                              "--height", "120"});
+  const int png_status =
+      run({run_file.string(), "--out", taken.string(), "--width", "200", "--height", "120"});
   std::printf("image path taken by a folder: exit %d\n", png_status);
   EXPECT_EQ(png_status, 3);
   // A folder that exists but refuses new files (skipped as root, who may write anywhere).
@@ -321,8 +323,8 @@ TEST(RenderCommand, UnwritableOutputExitsWithThree) {
   fs::permissions(locked, fs::perms::owner_read | fs::perms::owner_exec);
   const bool can_write = std::ofstream(locked / "probe").good();
   if (!can_write) {
-    const int locked_status = run({run_file.string(), "--out", locked.string(), "--width", "200",
-                                   "--height", "120"});
+    const int locked_status =
+        run({run_file.string(), "--out", locked.string(), "--width", "200", "--height", "120"});
     std::printf("read-only output folder: exit %d\n", locked_status);
     EXPECT_EQ(locked_status, 3);
   } else {
@@ -346,8 +348,8 @@ TEST(RenderCommand, VideoIsOptional) {
   const fs::path dir = run_file.parent_path();
   const fs::path empty_bin = dir / "empty_bin";
   fs::create_directories(empty_bin);
-  const int without = run_with_path(empty_bin, {run_file.string(), "--video", "--width", "200",
-                                                "--height", "120"});
+  const int without =
+      run_with_path(empty_bin, {run_file.string(), "--video", "--width", "200", "--height", "120"});
   std::printf("--video without ffmpeg: exit %d, %zu frames\n", without,
               png_names(dir / "frames").size());
   EXPECT_EQ(without, 0);

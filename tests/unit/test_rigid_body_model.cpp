@@ -25,8 +25,9 @@ TEST(RigidBodyModel, BoxInertiaIsExactWithCellInertia) {
                    mass * (a * a + b * b) / 12);
   double worst = 0.0;
   for (int k = 0; k < 3; ++k) worst = std::max(worst, relative(m.inertia(k, k), exact[k]));
-  const double off_diagonal = (m.inertia - Eigen::Matrix3d(m.inertia.diagonal().asDiagonal()))
-                                  .cwiseAbs().maxCoeff() / exact.maxCoeff();
+  const double off_diagonal =
+      (m.inertia - Eigen::Matrix3d(m.inertia.diagonal().asDiagonal())).cwiseAbs().maxCoeff() /
+      exact.maxCoeff();
   std::printf("box 0.3x0.2x0.1, d0 0.01: mass error %.2e, inertia error %.2e, off-diag %.2e\n",
               relative(m.mass, mass), worst, off_diagonal);
   EXPECT_LT(relative(m.mass, mass), 1e-12);
@@ -76,8 +77,8 @@ TEST(RigidBodyModel, CylinderInertiaConvergesToTheExactFormula) {
     const double e_axial = relative(m.inertia(2, 2), axial);
     const double e_transverse = relative(m.inertia(0, 0), transverse);
     const double e_mass = relative(m.mass, rho * std::numbers::pi * radius * radius * length);
-    std::printf("cylinder R/d0 = %2d: mass %.2e, I_axis %.2e, I_transverse %.2e\n", cells,
-                e_mass, e_axial, e_transverse);
+    std::printf("cylinder R/d0 = %2d: mass %.2e, I_axis %.2e, I_transverse %.2e\n", cells, e_mass,
+                e_axial, e_transverse);
     const double tolerance = 0.5 / cells;
     EXPECT_LT(e_axial, tolerance);
     EXPECT_LT(e_transverse, tolerance);

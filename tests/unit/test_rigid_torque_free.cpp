@@ -71,8 +71,10 @@ TEST(RigidTorqueFree, SplittingConservesEnergyAndMomentumOverManyTurns) {
   ASSERT_EQ(options.rotation, RotationScheme::kMomentumSplitting);
   const Drift coarse = tumble(m, options, 0.01, 100);
   const Drift fine = tumble(m, options, 0.005, 100);
-  std::printf("splitting, 100 turns, |w|dt = 0.01: max |dE/E| %.2e, | |L|/|L0| - 1 | %.2e, "
-              "|L - L0|/|L0| %.2e\n", coarse.energy, coarse.momentum_norm, coarse.momentum_vector);
+  std::printf(
+      "splitting, 100 turns, |w|dt = 0.01: max |dE/E| %.2e, | |L|/|L0| - 1 | %.2e, "
+      "|L - L0|/|L0| %.2e\n",
+      coarse.energy, coarse.momentum_norm, coarse.momentum_vector);
   std::printf("splitting, 100 turns, |w|dt = 0.005: max |dE/E| %.2e (ratio %.2f)\n", fine.energy,
               coarse.energy / fine.energy);
   EXPECT_LT(coarse.energy, 1e-5);
@@ -92,10 +94,11 @@ TEST(RigidTorqueFree, ExplicitEulerDriftsAtFirstOrder) {
   const Drift coarse = tumble(m, euler, 0.002, 10);
   const Drift fine = tumble(m, euler, 0.001, 10);
   const Drift splitting = tumble(m, IntegratorOptions{}, 0.002, 10);
-  std::printf("explicit Euler, 10 turns: |w|dt = 0.002: dE/E %.2e, |L-L0|/|L0| %.2e; "
-              "|w|dt = 0.001: dE/E %.2e (ratio %.2f); splitting at 0.002: %.2e\n",
-              coarse.energy, coarse.momentum_vector, fine.energy, coarse.energy / fine.energy,
-              splitting.energy);
+  std::printf(
+      "explicit Euler, 10 turns: |w|dt = 0.002: dE/E %.2e, |L-L0|/|L0| %.2e; "
+      "|w|dt = 0.001: dE/E %.2e (ratio %.2f); splitting at 0.002: %.2e\n",
+      coarse.energy, coarse.momentum_vector, fine.energy, coarse.energy / fine.energy,
+      splitting.energy);
   EXPECT_GT(coarse.energy / fine.energy, 1.8);
   EXPECT_LT(coarse.energy / fine.energy, 2.2);
   EXPECT_GT(coarse.energy, 100.0 * splitting.energy);
@@ -161,9 +164,10 @@ TEST(RigidTorqueFree, SpinAboutAxisOneOscillatesAtTheAnalyticFrequency) {
   ASSERT_GE(crossings.size(), 20u);
   const double half_periods = static_cast<double>(crossings.size() - 1);
   const double measured = std::numbers::pi * half_periods / (crossings.back() - crossings.front());
-  std::printf("axis-1 spin: Omega measured %.6f rad/s, analytic %.6f rad/s, error %.2e; "
-              "max |w1/w - 1| = %.1e (stable)\n",
-              measured, omega, measured / omega - 1.0, max_w1_change);
+  std::printf(
+      "axis-1 spin: Omega measured %.6f rad/s, analytic %.6f rad/s, error %.2e; "
+      "max |w1/w - 1| = %.1e (stable)\n",
+      measured, omega, measured / omega - 1.0, max_w1_change);
   EXPECT_NEAR(measured / omega, 1.0, 1e-3);
   EXPECT_LT(max_w1_change, 1e-5);  // stable: stays O(perturbation^2)
 }

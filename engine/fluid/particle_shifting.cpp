@@ -1,0 +1,49 @@
+// Fickian particle shifting (Lind, Xu, Stansby & Rogers 2012, J. Comput. Phys. 231): after the
+// position update, each fluid particle moves down the gradient of the particle concentration,
+//   delta r_i = -A h^2 <grad C>_i,   <grad C>_i = sum_j V_j grad W_ij,
+// which keeps the particle distribution close to uniform. On the free surface the concentration
+// gradient points out of the fluid, so only its tangential part is applied there.
+// Not part of METHOD.md's projection step: an optional stabiliser (parameter shifting = A).
+#include "engine/fluid/isph_stages.hpp"
+
+namespace washout {
+
+void shift_particles(const SphContext& ctx, const NeighborList& list, Particles& p,
+                     const FluidWork& work, double coefficient, std::vector<double>& scratch) {
+  const std::size_t n = p.fluid_count;
+  scratch.assign(3 * n, 0.0);
+  const double scale = coefficient * ctx.h * ctx.h * ctx.volume * ctx.gradient_correction;
+  const double max_shift = 0.1 * ctx.d0;  // never more than a tenth of the spacing per step
+#pragma omp parallel for schedule(static)
+  for (std::size_t i = 0; i < n; ++i) {
+    double grad[3] = {0, 0, 0};
+    for (std::uint64_t k = list.offset[i]; k < list.offset[i + 1]; ++k) {
+      double d[3];
+      ctx.displacement(p, i, list.index[k], d);
+      const double r = std::sqrt(d[0] * d[0] + d[1] * d[1] + d[2] * d[2]);
+      const double f = ctx.kernel.derivative_over_r(r);
+      for (int a = 0; a < ctx.dim; ++a) grad[a] += f * d[a];
+    }
+    double shift[3] = {0, 0, 0}, norm2 = 0.0;
+    for (int a = 0; a < ctx.dim; ++a) {
+      shift[a] = -scale * grad[a];
+      norm2 += grad[a] * grad[a];
+    }
+    if (work.free_surface[i] && norm2 > 0) {
+      // Remove the part along the surface normal n = -grad C / |grad C|.
+      double along = 0.0;
+      for (int a = 0; a < ctx.dim; ++a) along += shift[a] * grad[a];
+      for (int a = 0; a < ctx.dim; ++a) shift[a] -= along * grad[a] / norm2;
+    }
+    double s2 = 0.0;
+    for (int a = 0; a < ctx.dim; ++a) s2 += shift[a] * shift[a];
+    const double limit = s2 > max_shift * max_shift ? max_shift / std::sqrt(s2) : 1.0;
+    for (int a = 0; a < ctx.dim; ++a) scratch[3 * i + a] = limit * shift[a];
+  }
+#pragma omp parallel for schedule(static)
+  for (std::size_t i = 0; i < n; ++i)
+    for (int a = 0; a < ctx.dim; ++a)
+      p.position[a][i] = ctx.periodic.wrap(p.position[a][i] + scratch[3 * i + a], a);
+}
+
+}  // namespace washout

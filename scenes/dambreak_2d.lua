@@ -1,0 +1,25 @@
+-- Dam break of Martin & Moyce (1952), n^2 = 2: a water column of width a and height 2a
+-- collapses on a dry bed. The surge front Z = x/a against T = t sqrt(2 g / a) is compared with
+-- their Table 2 (../shared/refdata/mm1952_n2_front_table.csv) by tests/scene/test_dambreak.cpp.
+-- Column a = 0.146 m as in Koshizuka & Oka (1996); a/d0 = 20 by default.
+local tank = require("tank")
+
+local a = 0.146
+local P = washout.parameters {
+  dim = 2,
+  d0 = a / 20,
+  end_time = 0.3,          -- T = t sqrt(2g/a) = 3.5
+  output_interval = 0.005,
+  scene = {
+    column_width = a,      -- a [m]
+    column_height = 2 * a, -- n^2 a [m]
+    tank_length = 5 * a,   -- long enough that the front never reaches the far wall by T = 3.5
+    tank_height = 3 * a,
+  },
+}
+
+washout.fluid { washout.box { min = { 0, 0 }, max = { P.column_width, P.column_height } } }
+washout.wall { tank.open_box(P, { min = { 0, 0 }, max = { P.tank_length, P.tank_height } }),
+               name = "tank" }
+washout.probe { name = "front", quantity = "front", axis = "x" }
+washout.probe { name = "residual_height", quantity = "water_height", at = { 0.5 * P.d0, 0 } }
