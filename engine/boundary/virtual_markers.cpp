@@ -16,7 +16,6 @@ void update_marker_velocities(const SphContext& ctx, const NeighborGrid& grid, c
                               const std::vector<std::uint8_t>& active, FluidWork& work) {
   const std::size_t n = p.size();
   for (int a = 0; a < 3; ++a) work.marker_velocity[a].resize(n, 0.0);
-  work.wall_wet.assign(n - p.fluid_count, 0);
 #pragma omp parallel for schedule(dynamic, 256)
   for (std::size_t w = p.fluid_count; w < n; ++w) {
     if (!active[w]) continue;
@@ -27,18 +26,16 @@ void update_marker_velocities(const SphContext& ctx, const NeighborGrid& grid, c
       m[a] = p.position[a][w] + 2.0 * p.wall_distance[w] * normal[a];
     }
     double u_m[3] = {0, 0, 0};
-    const double fraction = accumulate_fluid_at(ctx, grid, p, m, [&](std::uint32_t f, double wt) {
+    const double fraction = interpolate_fluid_linear(ctx, grid, p, m, [&](std::uint32_t f, double wt) {
       for (int a = 0; a < ctx.dim; ++a) u_m[a] += wt * p.velocity[a][f];
     });
-    work.wall_wet[w - p.fluid_count] = fraction >= kWetFluidFraction;
     if (fraction < kDryFluidFraction) {
       for (int a = 0; a < 3; ++a) work.marker_velocity[a][w] = u_wall[a];
       continue;
     }
-    const double inv = ctx.volume / fraction;  // 1 / sum W
     double rel[3], un = 0.0;
     for (int a = 0; a < 3; ++a) {
-      rel[a] = u_m[a] * inv - u_wall[a];
+      rel[a] = u_m[a] - u_wall[a];
       un += rel[a] * normal[a];
     }
     const double tangential_factor = 2.0 * work.wall_slip[w - p.fluid_count] - 1.0;
@@ -61,7 +58,7 @@ void update_wall_pressures(const SphContext& ctx, const NeighborGrid& grid, cons
     double m[3];
     for (int a = 0; a < 3; ++a) m[a] = p.position[a][w] + 2.0 * p.wall_distance[w] * p.normal[a][w];
     double P_m = 0.0;
-    const double fraction = accumulate_fluid_at(
+    const double fraction = interpolate_fluid_linear(
         ctx, grid, p, m, [&](std::uint32_t f, double wt) { P_m += wt * p.pressure[f]; });
     if (fraction < kDryFluidFraction) {
       p.pressure[w] = 0.0;
@@ -69,7 +66,7 @@ void update_wall_pressures(const SphContext& ctx, const NeighborGrid& grid, cons
     }
     double hydrostatic = 0.0;
     for (int a = 0; a < ctx.dim; ++a) hydrostatic += gravity[a] * (p.position[a][w] - m[a]);
-    p.pressure[w] = P_m * ctx.volume / fraction + ctx.rho0 * hydrostatic;
+    p.pressure[w] = P_m + ctx.rho0 * hydrostatic;
   }
 }
 

@@ -38,7 +38,8 @@ bool gradient_correction_matrix(const SphContext& ctx, const NeighborList& list,
 
 double correct_and_advect(const SphContext& ctx, const NeighborList& list, Particles& p,
                           const FluidWork& work, const Vec3& gravity, double dt,
-                          bool symmetric_gradient) {
+                          bool symmetric_gradient, double surface_smoothing,
+                          std::vector<double>& smoothed) {
   const std::size_t n = p.fluid_count;
   const double g_scale = ctx.gradient_correction * ctx.volume;
 #pragma omp parallel for schedule(static)
@@ -50,7 +51,7 @@ double correct_and_advect(const SphContext& ctx, const NeighborList& list, Parti
     Eigen::Matrix3d L;
     const bool corrected = surface && gradient_correction_matrix(ctx, list, p, i, L);
     const double sign_i = (symmetric_gradient && !corrected) ? 1.0 : -1.0;  // P_i + P_j or P_j - P_i
-    double grad[3] = {0, 0, 0}, wall_grad[3] = {0, 0, 0};
+    double grad[3] = {0, 0, 0};
     const double Pi = p.pressure[i];
     for (std::uint64_t k = list.offset[i]; k < list.offset[i + 1]; ++k) {
       const std::size_t j = list.index[k];
@@ -60,17 +61,42 @@ double correct_and_advect(const SphContext& ctx, const NeighborList& list, Parti
       const double Pj =
           j < n ? p.pressure[j] : Pi + wall_pressure_jump(ctx, p, work, gravity, i, j, d, dt);
       const double f = g_scale * ctx.kernel.derivative_over_r(r) * (Pj + sign_i * Pi);
-      double* target = (corrected && j >= n) ? wall_grad : grad;
-      for (int a = 0; a < ctx.dim; ++a) target[a] += f * d[a];
+      for (int a = 0; a < ctx.dim; ++a) grad[a] += f * d[a];
     }
     if (corrected) {
       // L already normalises the sum: undo the lattice normalisation before applying it.
       const Eigen::Vector3d g =
           L * Eigen::Vector3d(grad[0], grad[1], grad[2]) / ctx.gradient_correction;
-      for (int a = 0; a < ctx.dim; ++a) grad[a] = g[a] + wall_grad[a];
+      for (int a = 0; a < ctx.dim; ++a) grad[a] = g[a];
     }
     for (int a = 0; a < ctx.dim; ++a)
       p.velocity[a][i] = work.u_star[a][i] - dt / ctx.rho0 * grad[a];
+  }
+  // Free-surface particles carry P = 0 and so no incompressibility constraint of their own:
+  // nothing would stop them drifting away from the fluid beneath. They move with the
+  // kernel-weighted mean velocity of their neighbourhood (XSPH, Monaghan 1989, surface only).
+  if (surface_smoothing > 0) {
+    smoothed.assign(3 * n, 0.0);
+#pragma omp parallel for schedule(static)
+    for (std::size_t i = 0; i < n; ++i) {
+      if (!work.free_surface[i]) continue;
+      double sum_w = ctx.kernel.value(0.0), mean[3];
+      for (int a = 0; a < 3; ++a) mean[a] = sum_w * p.velocity[a][i];
+      for (std::uint64_t k = list.offset[i]; k < list.offset[i + 1]; ++k) {
+        const std::size_t j = list.index[k];
+        if (j >= n) continue;
+        double d[3];
+        ctx.displacement(p, i, j, d);
+        const double w = ctx.kernel.value(std::sqrt(d[0] * d[0] + d[1] * d[1] + d[2] * d[2]));
+        sum_w += w;
+        for (int a = 0; a < 3; ++a) mean[a] += w * p.velocity[a][j];
+      }
+      for (int a = 0; a < 3; ++a)
+        smoothed[3 * i + a] = p.velocity[a][i] + surface_smoothing * (mean[a] / sum_w - p.velocity[a][i]);
+    }
+    for (std::size_t i = 0; i < n; ++i)
+      if (work.free_surface[i])
+        for (int a = 0; a < ctx.dim; ++a) p.velocity[a][i] = smoothed[3 * i + a];
   }
   double max_speed2 = 0.0;
 #pragma omp parallel for schedule(static) reduction(max : max_speed2)

@@ -1,6 +1,7 @@
 #pragma once
 // Shepard interpolation of fluid quantities at an arbitrary point (virtual-marker mirror points,
 // probes): f(m) = sum_f W(m - x_f) f_f / sum_f W(m - x_f), over fluid particles only.
+#include <Eigen/Dense>
 #include <cmath>
 
 #include "engine/core/neighbor_grid.hpp"
@@ -30,8 +31,42 @@ double accumulate_fluid_at(const SphContext& ctx, const NeighborGrid& grid, cons
 
 // Below this fluid fraction a point is dry: interpolated values there are not trusted.
 constexpr double kDryFluidFraction = 0.05;
-// A boundary particle whose mirror point holds less than this fluid fraction stands above the
-// free surface: it takes no part in the pressure equation (it faces air, not water).
+// Above this fluid fraction a point counts as wet (under water) rather than near the surface.
 constexpr double kWetFluidFraction = 0.5;
+
+// Linear moving-least-squares interpolation at m over the fluid particles: the weights
+// w_f = W(m - x_f) (p_f . beta), p_f = (1, x_f - m), with beta = A^-1 e_1 and
+// A = sum_f W p_f p_f^T, reproduce linear fields exactly even where the fluid lies on one side
+// of m only (next to a wall), where the plain Shepard average is biased towards the interior.
+// Calls visit(f, w_f) (the weights sum to 1); falls back to Shepard weights where the fluid is
+// too sparse to fit a gradient. Returns the fluid fraction at m as accumulate_fluid_at does.
+template <class Visit>
+double interpolate_fluid_linear(const SphContext& ctx, const NeighborGrid& grid,
+                                const Particles& p, const double m[3], Visit&& visit) {
+  Eigen::Matrix4d A = Eigen::Matrix4d::Zero();
+  const double scale = 1.0 / ctx.h;  // keeps A well scaled whatever the units
+  const double fraction = accumulate_fluid_at(ctx, grid, p, m, [&](std::uint32_t f, double w) {
+    Eigen::Vector4d q(1.0, 0.0, 0.0, 0.0);
+    for (int a = 0; a < ctx.dim; ++a) q[a + 1] = (p.position[a][f] - m[a]) * scale;
+    A += w * q * q.transpose();
+  });
+  if (fraction < kDryFluidFraction) return fraction;
+  for (int a = ctx.dim; a < 3; ++a) A(a + 1, a + 1) = 1.0;
+  Eigen::Vector4d beta = Eigen::Vector4d::Zero();
+  bool linear = false;
+  Eigen::LDLT<Eigen::Matrix4d> ldlt(A);
+  if (ldlt.info() == Eigen::Success && ldlt.rcond() > 1e-6) {
+    beta = ldlt.solve(Eigen::Vector4d(1.0, 0.0, 0.0, 0.0));
+    linear = beta.allFinite();
+  }
+  const double shepard = 1.0 / A(0, 0);
+  accumulate_fluid_at(ctx, grid, p, m, [&](std::uint32_t f, double w) {
+    if (!linear) return visit(f, w * shepard);
+    double q_dot_beta = beta[0];
+    for (int a = 0; a < ctx.dim; ++a) q_dot_beta += (p.position[a][f] - m[a]) * scale * beta[a + 1];
+    visit(f, w * q_dot_beta);
+  });
+  return fraction;
+}
 
 }  // namespace washout

@@ -14,7 +14,6 @@ struct FluidWork {
   std::vector<std::uint8_t> free_surface;              // 1: P = 0 (fluid)
   std::vector<double> eddy_viscosity;                  // nu_t (fluid; empty without turbulence)
   std::vector<double> wall_slip;                       // slip ratio per boundary particle
-  std::vector<std::uint8_t> wall_wet;                  // 1: fluid at the mirror point (boundary)
   std::vector<std::int32_t> unknown;                   // PPE row of a fluid particle, or -1
   CsrMatrix matrix;
   std::vector<double> rhs, solution;

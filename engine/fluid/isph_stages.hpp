@@ -65,7 +65,8 @@ inline double wall_pressure_jump(const SphContext& ctx, const Particles& p, cons
 // (corrector.cpp). Returns the largest fluid speed after the update.
 double correct_and_advect(const SphContext& ctx, const NeighborList& list, Particles& p,
                           const FluidWork& work, const Vec3& gravity, double dt,
-                          bool symmetric_gradient);
+                          bool symmetric_gradient, double surface_smoothing,
+                          std::vector<double>& smoothed);
 
 // Optional Fickian particle shifting after the position update (particle_shifting.cpp).
 void shift_particles(const SphContext& ctx, const NeighborList& list, Particles& p,

@@ -1,8 +1,9 @@
 // Fickian particle shifting (Lind, Xu, Stansby & Rogers 2012, J. Comput. Phys. 231): after the
 // position update, each fluid particle moves down the gradient of the particle concentration,
 //   delta r_i = -A h^2 <grad C>_i,   <grad C>_i = sum_j V_j grad W_ij,
-// which keeps the particle distribution close to uniform. On the free surface the concentration
-// gradient points out of the fluid, so only its tangential part is applied there.
+// which keeps the particle distribution close to uniform. Within a kernel support of the free
+// surface the concentration gradient mostly measures the truncated support and points out of the
+// fluid, so only its part tangential to the surface is applied there.
 // Not part of METHOD.md's projection step: an optional stabiliser (parameter shifting = A).
 #include "engine/fluid/isph_stages.hpp"
 
@@ -17,9 +18,12 @@ void shift_particles(const SphContext& ctx, const NeighborList& list, Particles&
 #pragma omp parallel for schedule(static)
   for (std::size_t i = 0; i < n; ++i) {
     double grad[3] = {0, 0, 0};
+    bool near_surface = work.free_surface[i] != 0;
     for (std::uint64_t k = list.offset[i]; k < list.offset[i + 1]; ++k) {
+      const std::size_t j = list.index[k];
+      near_surface = near_surface || (j < n && work.free_surface[j]);
       double d[3];
-      ctx.displacement(p, i, list.index[k], d);
+      ctx.displacement(p, i, j, d);
       const double r = std::sqrt(d[0] * d[0] + d[1] * d[1] + d[2] * d[2]);
       const double f = ctx.kernel.derivative_over_r(r);
       for (int a = 0; a < ctx.dim; ++a) grad[a] += f * d[a];
@@ -29,7 +33,7 @@ void shift_particles(const SphContext& ctx, const NeighborList& list, Particles&
       shift[a] = -scale * grad[a];
       norm2 += grad[a] * grad[a];
     }
-    if (work.free_surface[i] && norm2 > 0) {
+    if (near_surface && norm2 > 0) {
       // Remove the part along the surface normal n = -grad C / |grad C|.
       double along = 0.0;
       for (int a = 0; a < ctx.dim; ++a) along += shift[a] * grad[a];

@@ -57,11 +57,11 @@ const std::vector<ParameterInfo>& ParameterSet::engine_table() {
       {"alpha", "-",
        "relaxation of the density-invariance term in the PPE (0 divergence-free, 1 "
        "density-invariant); calibrated by the hydrostatic test, see docs/method.md",
-       0.05},
+       0.1},
       {"free_surface_threshold", "-",
        "a particle whose density is below this fraction of the full-support density is on the "
        "free surface and takes P = 0",
-       0.95},
+       0.9},
       {"dt", "s", "fixed time step; 0 = adaptive (cfl, viscous_number, dt_max)", 0.0},
       {"cfl", "-", "Courant number for the adaptive step: dt <= cfl h / max|u|", 0.2},
       {"viscous_number", "-", "viscous limit of the adaptive step: dt <= viscous_number h^2 / nu",
@@ -86,6 +86,10 @@ const std::vector<ParameterInfo>& ParameterSet::engine_table() {
       {"shifting", "-",
        "particle shifting coefficient A (delta r = -A h^2 grad C, Lind et al. 2012); 0 = off",
        0.0},
+      {"surface_smoothing", "-",
+       "free-surface particles move with this fraction of their neighbourhood's mean velocity "
+       "(XSPH on the surface only; 0 = off)",
+       0.5},
       {"output_interval", "s", "simulated time between output frames", 0.05},
       {"max_speed", "m/s", "a faster particle stops the run as unstable; 0 = 10 sqrt(2 g L)", 0.0},
       {"periodic", "-", "periodic axes, e.g. \"x\" (needs domain_min and domain_max)",
@@ -296,6 +300,7 @@ SimulationParameters SimulationParameters::from(const ParameterSet& set) {
   p.solver_max_iterations = integer("solver_max_iterations", positive("solver_max_iterations"));
   p.pressure_gradient = one_of("pressure_gradient", {"symmetric", "difference"});
   p.shifting = non_negative("shifting");
+  p.surface_smoothing = in_unit_interval("surface_smoothing");
   p.output_interval = positive("output_interval");
   p.max_speed = non_negative("max_speed");
   p.periodic = set.text("periodic");

@@ -69,8 +69,8 @@ struct SimulationParameters {
   double rho0 = 1000.0;
   double viscosity = 1e-6;  // kinematic, m^2/s
   Vec3 gravity = Vec3(0, -9.81, 0);
-  double alpha = 0.05;
-  double free_surface_threshold = 0.95;
+  double alpha = 0.1;
+  double free_surface_threshold = 0.9;
   double dt = 0.0;  // 0: adaptive
   double cfl = 0.2;
   double viscous_number = 0.125;
@@ -86,6 +86,7 @@ struct SimulationParameters {
   int solver_max_iterations = 5000;
   std::string pressure_gradient = "symmetric";
   double shifting = 0.0;
+  double surface_smoothing = 0.5;
   double output_interval = 0.05;
   double max_speed = 0.0;  // 0: automatic from gravity and domain size
   std::string periodic;    // axes, e.g. "x"

@@ -1,0 +1,26 @@
+-- Dam break of Martin & Moyce (1952), n^2 = 2, extruded in a narrow 3D tank (width a/2), the
+-- 3D counterpart of dambreak_2d.lua. The front Z = x/a against T = t sqrt(2 g / a) is compared
+-- with ../shared/refdata/mm1952_n2_front_table.csv by tests/scene/test_dambreak.cpp.
+local tank = require("tank")
+
+local a = 0.146
+local P = washout.parameters {
+  dim = 3,
+  d0 = a / 20,
+  end_time = 0.3,          -- T = 3.5
+  output_interval = 0.01,
+  scene = {
+    column_width = a,
+    column_height = 2 * a,
+    tank_length = 5 * a,
+    tank_width = a / 2,    -- 0.073 m: the narrow tank of the issue
+    tank_height = 3 * a,
+  },
+}
+
+washout.fluid { washout.box { min = { 0, 0, 0 },
+                              max = { P.column_width, P.tank_width, P.column_height } } }
+washout.wall { tank.open_box(P, { min = { 0, 0, 0 },
+                                  max = { P.tank_length, P.tank_width, P.tank_height } }),
+               name = "tank" }
+washout.probe { name = "front", quantity = "front", axis = "x" }

@@ -1,0 +1,21 @@
+-- Water at rest in a tank (3D). The pressure must settle to rho g (H - z) with no particle
+-- crossing a wall; the 3D counterpart of hydrostatic_2d.lua.
+local tank = require("tank")
+
+local P = washout.parameters {
+  dim = 3,
+  d0 = 0.01,             -- 10 particles over the depth (tests also run it finer)
+  end_time = 1.0,
+  output_interval = 0.1,
+  wall_slip = 0.0,
+  scene = {
+    water_height = 0.1,  -- H [m]
+    tank_length = 0.1,   -- x [m]
+    tank_width = 0.05,   -- y [m]
+  },
+}
+
+local L, B, H = P.tank_length, P.tank_width, P.water_height
+washout.fluid { washout.box { min = { 0, 0, 0 }, max = { L, B, H } } }
+washout.wall { tank.open_box(P, { min = { 0, 0, 0 }, max = { L, B, 1.5 * H } }), name = "tank" }
+washout.probe { name = "bottom_pressure", quantity = "pressure", at = { L / 2, B / 2, 0.1 * H } }
