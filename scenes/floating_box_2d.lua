@@ -1,10 +1,10 @@
--- A box of density 500 kg/m^3 released in still water (2D). Archimedes: it settles at the draft
--- D = (rho_b / rho_w) H, half its height. tests/scene/test_floating_box.cpp compares the
--- settled draft, averaged over the last second, with D at two resolutions.
+-- A box of density 500 kg/m^3 in still water (2D). Archimedes: it floats at the draft
+-- D = (rho_b / rho_w) H, half its height. Two checks (tests/scene/test_floating_box.cpp and
+-- tests/scene/long_floating_box.cpp):
+--   motion = "fixed":   held at the draft D, the fluid's pressure on it must carry its weight;
+--   motion = "dynamic": released at start_draft, it must settle at D (heave period ~0.6 s).
 -- The box is twice as wide as high: a square of half the water's density floats unstably
 -- (metacentric height GM = B^2/(12 D) + D/2 - H/2 < 0 for B = H) and would roll onto a corner.
--- It starts at 0.6 D and rises... sinks to D, oscillating in heave with a period of about 0.6 s
--- that wave radiation damps within a few periods.
 local tank = require("tank")
 
 local P = washout.parameters {
@@ -17,10 +17,11 @@ local P = washout.parameters {
     box_width = 0.2,      -- B [m]
     box_height = 0.1,     -- H [m]
     box_density = 500,    -- rho_b [kg/m^3]
-    start_draft = 0.03,   -- initial draft [m]; lattice-aligned for d0 = 0.01 and 0.005
+    start_draft = 0.03,   -- initial draft [m]; on lattice planes for d0 = 0.01 and 0.005
     water_depth = 0.2,    -- [m]
     tank_width = 0.6,     -- [m]
-    added_mass = 1,
+    motion = "dynamic",   -- or "fixed" (held at start_draft)
+    added_mass = 1,       -- the body's added-mass stabilisation (docs/bodies.md)
   },
 }
 
@@ -31,7 +32,8 @@ local bottom = Hw - P.start_draft
 washout.fluid { washout.box { min = { 0, 0 }, max = { W, Hw } } }
 washout.wall { tank.open_box(P, { min = { 0, 0 }, max = { W, Hw + 2 * H } }), name = "tank" }
 washout.body { washout.box { min = { x0, bottom }, max = { x0 + B, bottom + H } },
-               name = "box", density = P.box_density, added_mass = P.added_mass }
+               name = "box", density = P.box_density, motion = P.motion,
+               added_mass = P.added_mass }
 -- The water level beside the box, halfway between it and each side wall.
 washout.probe { name = "level_left", quantity = "water_height", at = { 0.5 * x0, 0 } }
 washout.probe { name = "level_right", quantity = "water_height", at = { W - 0.5 * x0, 0 } }

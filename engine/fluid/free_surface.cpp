@@ -1,17 +1,20 @@
 // Free-surface detection by a density threshold (METHOD.md step 2, "choose"): a particle whose
 // kernel support is partly empty has a low summation density. Such particles take P = 0.
+// With h = 1.2 d0 the top particle layer of still water sits near 0.75-0.83 rho0 and the layer
+// below near 0.95-0.97 rho0: the default threshold 0.9 keeps them well apart (0.95 made the
+// second layer flicker between Dirichlet and unknown).
 #include "engine/fluid/isph_stages.hpp"
 
 namespace washout {
 
-std::size_t detect_free_surface(const Particles& p, double rho0, double threshold,
+std::size_t detect_free_surface(const SphContext& ctx, const Particles& p, double threshold,
                                 FluidWork& work) {
   const std::size_t n = p.fluid_count;
   work.free_surface.assign(n, 0);
   std::size_t count = 0;
 #pragma omp parallel for reduction(+ : count) schedule(static)
   for (std::size_t i = 0; i < n; ++i) {
-    if (p.density[i] < threshold * rho0) {
+    if (p.density[i] < threshold * ctx.rho0) {
       work.free_surface[i] = 1;
       ++count;
     }

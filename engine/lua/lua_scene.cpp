@@ -1,16 +1,18 @@
 #include "engine/lua/lua_scene.hpp"
 
-#include <lua.hpp>
-
 #include <cmath>
 #include <cstdlib>
 #include <filesystem>
 #include <fstream>
+#include <lua.hpp>
 #include <set>
 #include <sstream>
 
+#include "engine/lua/lua_bodies.hpp"
+#include "engine/lua/lua_reading.hpp"
+
 namespace washout::lua {
-namespace {
+namespace detail {
 
 std::string where(lua_State* L) {
   luaL_where(L, 1);
@@ -21,14 +23,16 @@ std::string where(lua_State* L) {
 }
 
 [[noreturn]] void fail(lua_State* L, const std::string& message) {
-  luaL_where(L, 1);
-  lua_pushstring(L, message.c_str());
+  luaL_where(L, 1);  // "file:line: "
+  const std::size_t skip = !message.empty() && message[0] == ' ' ? 1 : 0;
+  lua_pushstring(L, message.c_str() + skip);
   lua_concat(L, 2);
   lua_error(L);
   std::abort();  // unreachable: lua_error does not return
 }
 
-}  // namespace
+}  // namespace detail
+using namespace detail;
 
 struct LuaScene::Binding {
   LuaScene* scene = nullptr;
@@ -131,8 +135,8 @@ struct LuaScene::Binding {
         return v;
       }
       case LUA_TBOOLEAN:
-        throw ParameterError(name, "parameter '" + name +
-                                       "' is a boolean; use 1 or 0 (Lua treats 0 as true)");
+        throw ParameterError(
+            name, "parameter '" + name + "' is a boolean; use 1 or 0 (Lua treats 0 as true)");
       default:
         throw ParameterError(name, "parameter '" + name + "' must be a number, string or list");
     }
@@ -173,10 +177,20 @@ LuaScene::Binding* binding(lua_State* L) {
   return static_cast<LuaScene::Binding*>(lua_touserdata(L, lua_upvalueindex(1)));
 }
 
+}  // namespace
+
+namespace detail {
+
+Model& resolved_model(lua_State* L) {
+  auto* b = binding(L);
+  b->ensure_resolved(L);
+  return b->scene->model();
+}
+
 // A point or vector given as {x, y} (2D) or {x, y, z} (3D).
 Vec3 read_vector(lua_State* L, int index, const char* what, int dim) {
-  if (!lua_istable(L, index)) fail(L, std::string(" ") + what + " must be a list of " +
-                                          std::to_string(dim) + " numbers");
+  if (!lua_istable(L, index))
+    fail(L, std::string(" ") + what + " must be a list of " + std::to_string(dim) + " numbers");
   const lua_Integer n = luaL_len(L, index);
   if (n != dim)
     fail(L, std::string(" ") + what + " must have " + std::to_string(dim) + " components in " +
@@ -208,14 +222,17 @@ double read_number(lua_State* L, int table, const char* field, const char* what,
 std::string read_string(lua_State* L, int table, const char* field, const std::string& fallback) {
   lua_getfield(L, table, field);
   std::string v = fallback;
-  if (lua_isstring(L, -1)) v = lua_tostring(L, -1);
-  else if (!lua_isnil(L, -1)) fail(L, std::string(" '") + field + "' must be a string");
+  if (lua_isstring(L, -1))
+    v = lua_tostring(L, -1);
+  else if (!lua_isnil(L, -1))
+    fail(L, std::string(" '") + field + "' must be a string");
   lua_pop(L, 1);
   return v;
 }
 
 // Rejects misspelt keys in a table argument: the nearest allowed key is suggested.
-void check_keys(lua_State* L, int table, const char* what, std::initializer_list<const char*> allowed) {
+void check_keys(lua_State* L, int table, const char* what,
+                std::initializer_list<const char*> allowed) {
   lua_pushnil(L);
   while (lua_next(L, table) != 0) {
     lua_pop(L, 1);
@@ -258,7 +275,8 @@ Shape read_shape_list(lua_State* L, int index, int dim) {
 
 Shape read_shape(lua_State* L, int index, int dim) {
   index = lua_absindex(L, index);
-  if (!lua_istable(L, index)) fail(L, " expected a shape (washout.box{...}, washout.cylinder{...})");
+  if (!lua_istable(L, index))
+    fail(L, " expected a shape (washout.box{...}, washout.cylinder{...})");
   lua_getfield(L, index, "kind");
   if (lua_isnil(L, -1)) {
     lua_pop(L, 1);
@@ -290,6 +308,23 @@ Shape read_shape(lua_State* L, int index, int dim) {
   const std::string axis = read_string(L, index, "axis", "z");
   return Shape::cylinder(c, r, length, axis == "x" ? 0 : axis == "y" ? 1 : 2);
 }
+
+// The shape of a region: the table's `shape` field or its first positional entry.
+Shape region_shape(lua_State* L, const char* what, int dim) {
+  lua_getfield(L, 1, "shape");
+  if (lua_isnil(L, -1)) {
+    lua_pop(L, 1);
+    lua_geti(L, 1, 1);
+  }
+  if (lua_isnil(L, -1)) fail(L, std::string(" ") + what + ": missing 'shape'");
+  Shape s = read_shape(L, -1, dim);
+  lua_pop(L, 1);
+  return s;
+}
+
+}  // namespace detail
+
+namespace {
 
 // Shape constructors return plain tables so that Lua helpers can inspect and build on them.
 int l_box(lua_State* L) {
@@ -323,7 +358,8 @@ int l_round_shape(lua_State* L, const char* kind) {
     check_keys(L, 1, "washout.cylinder", {"center", "radius", "length", "axis"});
   else
     check_keys(L, 1, "washout.sphere", {"center", "radius"});
-  if (!(read_number(L, 1, "radius", kind, true, 0) > 0)) fail(L, std::string(" ") + kind + ": radius must be positive");
+  if (!(read_number(L, 1, "radius", kind, true, 0) > 0))
+    fail(L, std::string(" ") + kind + ": radius must be positive");
   lua_pushvalue(L, 1);
   lua_pushstring(L, kind);
   lua_setfield(L, -2, "kind");
@@ -343,18 +379,8 @@ int l_union(lua_State* L) {
   return 1;
 }
 
-// The shape of a region: the table's `shape` field or its first positional entry.
 Shape region_shape(lua_State* L, const char* what) {
-  auto* b = binding(L);
-  lua_getfield(L, 1, "shape");
-  if (lua_isnil(L, -1)) {
-    lua_pop(L, 1);
-    lua_geti(L, 1, 1);
-  }
-  if (lua_isnil(L, -1)) fail(L, std::string(" ") + what + ": missing 'shape'");
-  Shape s = read_shape(L, -1, b->dim());
-  lua_pop(L, 1);
-  return s;
+  return detail::region_shape(L, what, binding(L)->dim());
 }
 
 int l_parameters(lua_State* L) {
@@ -397,7 +423,8 @@ WallMotion make_motion(lua_State* L, int ref, std::string name) {
       for (int slot = -2; slot <= -1; ++slot) {
         if (!lua_istable(L, slot)) {
           if (slot == -2)
-            throw SceneError("motion of wall '" + name + "' must return a displacement {dx, dy[, dz]}");
+            throw SceneError("motion of wall '" + name +
+                             "' must return a displacement {dx, dy[, dz]}");
           continue;
         }
         Vec3 v = Vec3::Zero();
@@ -407,8 +434,10 @@ WallMotion make_motion(lua_State* L, int ref, std::string name) {
           v[k - 1] = lua_tonumber(L, -1);
           lua_pop(L, 1);
         }
-        if (slot == -2) d = v;
-        else if (vel) *vel = v, has_velocity = true;
+        if (slot == -2)
+          d = v;
+        else if (vel)
+          *vel = v, has_velocity = true;
       }
       lua_pop(L, 2);
       return std::make_pair(d, has_velocity);
@@ -425,20 +454,28 @@ WallMotion make_motion(lua_State* L, int ref, std::string name) {
 
 int add_wall(lua_State* L, bool moving) {
   luaL_checktype(L, 1, LUA_TTABLE);
-  if (moving) check_keys(L, 1, "washout.moving_wall", {"shape", "name", "slip", "motion"});
-  else check_keys(L, 1, "washout.wall", {"shape", "name", "slip"});
+  if (moving)
+    check_keys(L, 1, "washout.moving_wall", {"shape", "name", "slip", "motion", "material"});
+  else
+    check_keys(L, 1, "washout.wall", {"shape", "name", "slip", "material"});
   auto* b = binding(L);
   b->ensure_resolved(L);
   auto& model = b->scene->model();
   WallSpec w;
   w.shape = region_shape(L, moving ? "washout.moving_wall" : "washout.wall");
-  w.name = read_string(L, 1, "name", (moving ? "moving_wall_" : "wall_") + std::to_string(model.walls.size()));
+  w.name = read_string(L, 1, "name",
+                       (moving ? "moving_wall_" : "wall_") + std::to_string(model.walls.size()));
   w.slip = read_number(L, 1, "slip", "wall", false, model.params.wall_slip);
   if (!(w.slip >= 0 && w.slip <= 1)) fail(L, " wall '" + w.name + "': slip must lie in [0, 1]");
+  w.material = read_string(L, 1, "material", "");
+  if (!w.material.empty() && !material_defined(L, w.material.c_str()))
+    fail(L, " wall '" + w.name + "': unknown material '" + w.material +
+                "' (define it with washout.material before)");
   w.where = where(L);
   if (moving) {
     lua_getfield(L, 1, "motion");
-    if (!lua_isfunction(L, -1)) fail(L, " washout.moving_wall: 'motion' must be a function of time");
+    if (!lua_isfunction(L, -1))
+      fail(L, " washout.moving_wall: 'motion' must be a function of time");
     const int ref = luaL_ref(L, LUA_REGISTRYINDEX);
     w.motion = make_motion(L, ref, w.name);
   }
@@ -458,19 +495,26 @@ int l_probe(lua_State* L) {
   p.name = read_string(L, 1, "name", "");
   if (p.name.empty()) fail(L, " washout.probe: missing 'name'");
   for (const auto& other : b->scene->model().probes)
-    if (other.name == p.name) fail(L, " washout.probe: a probe named '" + p.name + "' exists already");
+    if (other.name == p.name)
+      fail(L, " washout.probe: a probe named '" + p.name + "' exists already");
   const std::string q = read_string(L, 1, "quantity", "pressure");
-  if (q == "pressure") p.quantity = ProbeSpec::Quantity::Pressure;
-  else if (q == "water_height") p.quantity = ProbeSpec::Quantity::WaterHeight;
-  else if (q == "front") p.quantity = ProbeSpec::Quantity::Front;
-  else fail(L, " washout.probe: quantity must be \"pressure\", \"water_height\" or \"front\", got \"" + q + "\"");
+  if (q == "pressure")
+    p.quantity = ProbeSpec::Quantity::Pressure;
+  else if (q == "water_height")
+    p.quantity = ProbeSpec::Quantity::WaterHeight;
+  else if (q == "front")
+    p.quantity = ProbeSpec::Quantity::Front;
+  else
+    fail(L, " washout.probe: quantity must be \"pressure\", \"water_height\" or \"front\", got \"" +
+                q + "\"");
   if (p.quantity != ProbeSpec::Quantity::Front) {
     lua_getfield(L, 1, "at");
     p.point = read_vector(L, -1, "probe 'at'", b->dim());
     lua_pop(L, 1);
   } else {
     const std::string axis = read_string(L, 1, "axis", "x");
-    if (axis != "x" && axis != "y" && axis != "z") fail(L, " washout.probe: axis must be x, y or z");
+    if (axis != "x" && axis != "y" && axis != "z")
+      fail(L, " washout.probe: axis must be x, y or z");
     p.axis = axis[0] - 'x';
   }
   b->scene->model().probes.push_back(p);
@@ -606,6 +650,8 @@ class LuaCallbacks final : public RunObserver {
       lua_setfield(L, -2, probes[k].name.c_str());
     }
     lua_setfield(L, -2, "probes");
+    push_body_states(L, sim);
+    lua_setfield(L, -2, "bodies");
     if (lua_pcall(L, 1, 0, 0) != LUA_OK) {
       std::string m = lua_tostring(L, -1);
       lua_pop(L, 1);
@@ -647,12 +693,25 @@ LuaScene::LuaScene(const std::string& path, const Overrides& overrides)
   lua_setfield(L_, -2, "path");
   lua_pop(L_, 1);
 
-  static const luaL_Reg functions[] = {
-      {"parameters", l_parameters}, {"box", l_box},       {"cylinder", l_cylinder},
-      {"sphere", l_sphere},         {"union", l_union},   {"fluid", l_fluid},
-      {"wall", l_wall},             {"moving_wall", l_moving_wall}, {"probe", l_probe},
-      {"output", l_output},         {"frames", l_frames}, {"on_step", l_on_step},
-      {"on_frame", l_on_frame},     {"stop", l_stop},     {nullptr, nullptr}};
+  static const luaL_Reg functions[] = {{"parameters", l_parameters},
+                                       {"box", l_box},
+                                       {"cylinder", l_cylinder},
+                                       {"sphere", l_sphere},
+                                       {"union", l_union},
+                                       {"fluid", l_fluid},
+                                       {"wall", l_wall},
+                                       {"moving_wall", l_moving_wall},
+                                       {"probe", l_probe},
+                                       {"output", l_output},
+                                       {"frames", l_frames},
+                                       {"on_step", l_on_step},
+                                       {"on_frame", l_on_frame},
+                                       {"stop", l_stop},
+                                       {"body", l_body},
+                                       {"material", l_material},
+                                       {"friction", l_friction},
+                                       {"contact", l_contact},
+                                       {nullptr, nullptr}};
   lua_newtable(L_);
   lua_pushlightuserdata(L_, binding_.get());
   luaL_setfuncs(L_, functions, 1);
@@ -662,7 +721,8 @@ LuaScene::LuaScene(const std::string& path, const Overrides& overrides)
 
   try {
     auto run_protected = [&](lua_CFunction f) {
-      if (f == nullptr) return luaL_loadfile(L_, path.c_str()) == LUA_OK && lua_pcall(L_, 0, 0, 0) == LUA_OK;
+      if (f == nullptr)
+        return luaL_loadfile(L_, path.c_str()) == LUA_OK && lua_pcall(L_, 0, 0, 0) == LUA_OK;
       lua_pushlightuserdata(L_, binding_.get());
       lua_pushcclosure(L_, f, 1);
       return lua_pcall(L_, 0, 0, 0) == LUA_OK;
@@ -670,10 +730,10 @@ LuaScene::LuaScene(const std::string& path, const Overrides& overrides)
     // The script, then (if it never called washout.parameters) the defaults with the overrides.
     const bool ok = run_protected(nullptr) &&
                     (binding_->resolved || run_protected([](lua_State* Ls) {
-                      auto* b = static_cast<Binding*>(lua_touserdata(Ls, lua_upvalueindex(1)));
-                      b->resolve(Ls, 0);
-                      return 0;
-                    }));
+                       auto* b = static_cast<Binding*>(lua_touserdata(Ls, lua_upvalueindex(1)));
+                       b->resolve(Ls, 0);
+                       return 0;
+                     }));
     if (!ok) {
       if (binding_->pending) throw SceneError(*binding_->pending);
       std::string m = lua_tostring(L_, -1);

@@ -26,10 +26,69 @@ using WallMotion = std::function<void(double t, Vec3& displacement, Vec3& veloci
 struct WallSpec {
   std::string name;
   Shape shape;
-  double slip = 0.65;  // 0 no-slip, 1 free-slip
-  WallMotion motion;   // empty for a fixed wall
+  double slip = 0.65;    // 0 no-slip, 1 free-slip
+  WallMotion motion;     // empty for a fixed wall
+  std::string material;  // contact material (MaterialSpec name); empty: "default"
   SourceLocation where;
   bool moving() const { return static_cast<bool>(motion); }
+};
+
+// A contact material (METHOD.md Contact). Defaults: the paper's PLA girder.
+struct MaterialSpec {
+  std::string name;
+  double young_modulus = 5.0e9;  // E [Pa]
+  double poisson_ratio = 0.28;   // nu [-]
+  double restitution = 0.8;      // eps [-]
+  SourceLocation where;
+};
+
+// Friction (and optionally restitution) of one pair of materials; pairs not listed: mu = 0,
+// eps = sqrt(eps_a eps_b).
+struct FrictionSpec {
+  std::string material_a, material_b;
+  double friction = 0.0;    // mu [-]
+  double restitution = -1;  // eps [-]; < 0: not set
+  SourceLocation where;
+};
+
+// Settings of the DEM contact law and its sub-stepping (docs/rigid_bodies.md "Parameters").
+struct ContactSpec {
+  std::string law = "linear";           // "linear" or "hertz"
+  std::string damping_mass = "shared";  // "shared" (M / N_c) or "whole_body" (M)
+  bool allow_tension = true;
+  double steps_per_contact = 20.0;
+  long max_substeps = 1000000;
+};
+
+// A prescribed body pose at time t, relative to the body's initial pose: the displacement of
+// its centre of mass and the rotation vector (axis times angle, world frame), with their rates.
+struct BodyPose {
+  Vec3 displacement = Vec3::Zero();
+  Vec3 rotation = Vec3::Zero();
+  Vec3 velocity = Vec3::Zero();
+  Vec3 angular_velocity = Vec3::Zero();
+};
+using BodyMotion = std::function<BodyPose(double t)>;
+
+// A rigid body built from a shape (docs/bodies.md). Mass from `density` or `mass` (exactly one
+// is positive; 2D: per metre of thickness).
+struct BodySpec {
+  enum class Motion { Dynamic, Fixed, Prescribed };
+  std::string name;
+  Shape shape;
+  double density = 0.0;  // [kg/m^dim]
+  double mass = 0.0;     // [kg] (2D: kg/m)
+  std::string material;  // contact material; empty: "default"
+  double slip = 0.65;    // slip ratio of its surface for the fluid
+  Motion motion = Motion::Dynamic;
+  BodyMotion prescribed;                 // Motion::Prescribed
+  Vec3 velocity = Vec3::Zero();          // initial, of the centre of mass
+  Vec3 angular_velocity = Vec3::Zero();  // initial, world frame (2D: about z)
+  Vec3 angle_axis = Vec3::UnitZ();       // unit axis of the reported rotation angle
+  // Added-mass stabilisation of the fluid coupling (docs/bodies.md): m' = added_mass rho0 V
+  // (and rho0 times the shape's inertia per density for rotation); 0: METHOD.md's explicit step.
+  double added_mass = 1.0;
+  SourceLocation where;
 };
 
 struct ProbeSpec {
@@ -52,6 +111,10 @@ struct Model {
   std::vector<FluidRegion> fluids;
   std::vector<WallSpec> walls;
   std::vector<ProbeSpec> probes;
+  std::vector<BodySpec> bodies;  // empty: no rigid-body or contact stage is built
+  std::vector<MaterialSpec> materials;
+  std::vector<FrictionSpec> frictions;
+  ContactSpec contact;
   OutputSpec output;
   std::string scene_name;
   std::string scene_path;

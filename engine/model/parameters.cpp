@@ -57,7 +57,7 @@ const std::vector<ParameterInfo>& ParameterSet::engine_table() {
       {"alpha", "-",
        "relaxation of the density-invariance term in the PPE (0 divergence-free, 1 "
        "density-invariant); calibrated by the hydrostatic test, see docs/method.md",
-       0.1},
+       0.05},
       {"free_surface_threshold", "-",
        "a particle whose density is below this fraction of the full-support density is on the "
        "free surface and takes P = 0",

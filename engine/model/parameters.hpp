@@ -69,7 +69,7 @@ struct SimulationParameters {
   double rho0 = 1000.0;
   double viscosity = 1e-6;  // kinematic, m^2/s
   Vec3 gravity = Vec3(0, -9.81, 0);
-  double alpha = 0.1;
+  double alpha = 0.05;
   double free_surface_threshold = 0.9;
   double dt = 0.0;  // 0: adaptive
   double cfl = 0.2;

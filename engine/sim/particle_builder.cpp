@@ -25,23 +25,85 @@ std::string format_length(double v) {
   return o.str();
 }
 
+std::string format_point(const Vec3& x, int dim) {
+  std::ostringstream o;
+  o << "(" << x.x() << ", " << x.y();
+  if (dim == 3) o << ", " << x.z();
+  o << ") m";
+  return o.str();
+}
+
+// Bodies must start clear of the walls and of each other: no particle of one inside the shape
+// of another (touching is allowed: a girder resting on its pier).
+void check_body_overlaps(const Model& model, const BuiltParticles& out) {
+  const int dim = model.params.dim;
+  const Particles& p = out.particles;
+  for (std::size_t b = 0; b < out.bodies.size(); ++b) {
+    const BodySpec& body = model.bodies[b];
+    for (const Vec3& x : out.bodies[b].position) {
+      for (const auto& wall : model.walls)
+        if (wall.shape.signed_distance(x, dim) < 0.0)
+          throw SceneError("body '" + body.name + "' overlaps wall '" + wall.name + "' at " +
+                               format_point(x, dim),
+                           body.where, "shape");
+      for (std::size_t c = 0; c < out.bodies.size(); ++c)
+        if (c != b && model.bodies[c].shape.signed_distance(x, dim) < 0.0)
+          throw SceneError("body '" + body.name + "' overlaps body '" + model.bodies[c].name +
+                               "' at " + format_point(x, dim),
+                           body.where, "shape");
+    }
+    for (std::size_t i = p.fluid_count; i < p.size(); ++i) {
+      if (p.kind[i] == static_cast<std::uint8_t>(ParticleKind::RigidBody)) continue;
+      if (body.shape.signed_distance(p.x(i), dim) < 0.0)
+        throw SceneError("body '" + body.name + "' overlaps wall '" + model.walls[p.group[i]].name +
+                             "' at " + format_point(p.x(i), dim),
+                         body.where, "shape");
+    }
+  }
+}
+
+// Body particles after the walls: each body's outer layers, in its model's order.
+void add_bodies(const Model& model, int layers, std::unordered_set<std::uint64_t>& occupied,
+                BuiltParticles& out) {
+  if (model.bodies.empty()) return;
+  const int dim = model.params.dim;
+  const double d0 = model.params.d0;
+  for (std::size_t b = 0; b < model.bodies.size(); ++b)
+    out.bodies.push_back(build_body(model.bodies[b], dim, d0, layers));
+  check_body_overlaps(model, out);
+  for (std::size_t b = 0; b < model.bodies.size(); ++b) {
+    const BuiltBody& body = out.bodies[b];
+    out.body_first.push_back(out.particles.size());
+    for (std::size_t k = 0; k < body.position.size(); ++k) {
+      occupied.insert(lattice_key(body.position[k], d0));
+      out.particles.add(ParticleKind::RigidBody, body.position[k], Vec3::Zero(),
+                        static_cast<std::int32_t>(b), body.normal[k], body.depth[k]);
+      out.wall_slip.push_back(model.bodies[b].slip);
+    }
+  }
+}
+
 }  // namespace
 
 BuiltParticles build_particles(const Model& model) {
   const auto& prm = model.params;
   const int dim = prm.dim;
   const double d0 = prm.d0;
-  const int layers =
-      prm.wall_layers > 0 ? prm.wall_layers : static_cast<int>(std::ceil(2.0 * prm.h() / d0 - 1e-9));
+  const int layers = prm.wall_layers > 0 ? prm.wall_layers
+                                         : static_cast<int>(std::ceil(2.0 * prm.h() / d0 - 1e-9));
   BuiltParticles out;
   out.particles.dim = dim;
   if (model.fluids.empty())
     throw SceneError("the scene defines no fluid (add washout.fluid{...})", model.scene_path);
 
   std::unordered_set<std::uint64_t> occupied;
+  // Fluid keeps half a spacing from walls and bodies (their surface lies d0/2 beyond their
+  // outermost particles on the lattice).
   auto near_wall = [&](const Vec3& x) {
     for (const auto& wall : model.walls)
       if (wall.shape.signed_distance(x, dim) < 0.5 * d0 - 1e-9 * d0) return true;
+    for (const auto& body : model.bodies)
+      if (body.shape.signed_distance(x, dim) < 0.5 * d0 - 1e-9 * d0) return true;
     return false;
   };
   for (const auto& region : model.fluids) {
@@ -60,7 +122,7 @@ BuiltParticles build_particles(const Model& model) {
       std::string why = points.empty()
                             ? "it is smaller than the particle spacing d0 = " + format_length(d0)
                             : "all of its " + std::to_string(points.size()) +
-                                  " lattice points lie inside or against walls";
+                                  " lattice points lie inside or against walls or bodies";
       throw SceneError("fluid region " + region.shape.describe() + " holds no particle: " + why,
                        region.where, "d0");
     }
@@ -90,6 +152,7 @@ BuiltParticles build_particles(const Model& model) {
     }
     if (wall.moving()) out.moving_walls.push_back(std::move(moving));
   }
+  add_bodies(model, layers, occupied, out);
   return out;
 }
 

@@ -4,8 +4,9 @@
 #include <chrono>
 #include <sstream>
 
-#include "engine/io/run_file_writer.hpp"
 #include "engine/fluid/isph_stages.hpp"
+#include "engine/io/run_file_writer.hpp"
+#include "engine/sim/rigid_body_system.hpp"
 #include "engine/sim/simulation.hpp"
 
 namespace washout {
@@ -37,6 +38,7 @@ void Simulation::flush_series(io::RunFileWriter& writer) {
     v->clear();
   for (auto* v : {&series_step_, &series_iterations_, &series_substeps_}) v->clear();
   probe_series_.clear();
+  if (bodies_) bodies_->flush(writer);
   writer.flush();
 }
 
@@ -51,8 +53,13 @@ RunSummary Simulation::run(const std::string& output_path,
 
   std::unique_ptr<io::RunFileWriter> writer;
   if (!output_path.empty()) {
-    io::RunHeader header{model_.scene_name, model_.scene_source,
-                         model_.parameter_set.to_json(), prm.dim, prm.d0, ctx_.h, prm.dt};
+    io::RunHeader header{model_.scene_name,
+                         model_.scene_source,
+                         model_.parameter_set.to_json(),
+                         prm.dim,
+                         prm.d0,
+                         ctx_.h,
+                         prm.dt};
     writer = std::make_unique<io::RunFileWriter>(output_path, header);
   }
   // The state at t = 0: densities and probes, then frame 0.
@@ -105,6 +112,7 @@ RunSummary Simulation::run(const std::string& output_path,
     series_energy_.push_back(report.kinetic_energy);
     series_substeps_.push_back(report.substeps);
     probe_series_.insert(probe_series_.end(), probe_values_.begin(), probe_values_.end());
+    if (bodies_) bodies_->record(report.time);
     {
       auto s = timer_.measure("callbacks");
       for (auto* o : observers)
@@ -127,7 +135,8 @@ RunSummary Simulation::run(const std::string& output_path,
   summary.time = time_;
   summary.steps = step_;
   summary.frames = frame;
-  summary.wall_seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  summary.wall_seconds =
+      std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   summary.mean_ppe_iterations = step_ > 0 ? double(total_ppe_iterations_) / step_ : 0.0;
   summary.wall_crossings = wall_crossings_;
   summary.stage_seconds = timer_.totals();

@@ -13,6 +13,7 @@
 #include "engine/fluid/isph_stages.hpp"
 #include "engine/io/run_file_writer.hpp"
 #include "engine/sim/particle_builder.hpp"
+#include "engine/sim/rigid_body_system.hpp"
 
 namespace washout {
 namespace {
@@ -58,6 +59,11 @@ Simulation::Simulation(Model model)
   particles_ = std::move(built.particles);
   moving_walls_ = std::move(built.moving_walls);
   work_.wall_slip = std::move(built.wall_slip);
+  if (!built.bodies.empty()) {
+    bodies_ = std::make_unique<RigidBodySystem>(model_, std::move(built.bodies),
+                                                std::move(built.body_first));
+    bodies_->place_particles(particles_);
+  }
   inside_wall_.assign(particles_.fluid_count, 0);
 
   // Domain: given, or the scene's bounding box with a generous margin (for blow-up detection).
@@ -78,17 +84,19 @@ Simulation::Simulation(Model model)
   }
   for (std::size_t i = 0; i < particles_.fluid_count; ++i)
     for (int a = 0; a < prm.dim; ++a)
-      if (particles_.position[a][i] < domain_lower_[a] || particles_.position[a][i] > domain_upper_[a])
+      if (particles_.position[a][i] < domain_lower_[a] ||
+          particles_.position[a][i] > domain_upper_[a])
         throw SceneError("fluid particle at " + format_point(particles_, i) +
                              " starts outside the domain (domain_min/domain_max)",
                          model_.scene_path, "domain_min");
   const double g = prm.gravity.norm();
-  max_speed_limit_ = prm.max_speed > 0 ? prm.max_speed
-                                       : std::max(10.0 * std::sqrt(2.0 * g * extent), 10.0);
+  max_speed_limit_ =
+      prm.max_speed > 0 ? prm.max_speed : std::max(10.0 * std::sqrt(2.0 * g * extent), 10.0);
   for (auto& wall : moving_walls_) {
     if (!evaluate_wall_motion(wall, 0.0))
-      throw SceneError("the motion of wall '" + model_.walls[wall.wall_index].name +
-                           "' is not finite at t = 0", model_.walls[wall.wall_index].where);
+      throw SceneError(
+          "the motion of wall '" + model_.walls[wall.wall_index].name + "' is not finite at t = 0",
+          model_.walls[wall.wall_index].where);
     set_wall_velocity(wall, particles_);
     set_wall_position(wall, particles_);
   }
@@ -137,7 +145,7 @@ StepReport Simulation::step_until(double until) {
     auto s = timer_.measure("density");
     compute_summation_density(ctx_, neighbors_, particles_);
     report.free_surface_particles =
-        detect_free_surface(particles_, prm.rho0, prm.free_surface_threshold, work_);
+        detect_free_surface(ctx_, particles_, prm.free_surface_threshold, work_);
   }
   {
     auto s = timer_.measure("wall_markers");
@@ -161,15 +169,17 @@ StepReport Simulation::step_until(double until) {
       set_wall_velocity(wall, particles_);
     }
   }
+  if (bodies_) bodies_->set_prescribed_velocities(t_new, particles_);
   PpeStatistics ppe;
   {
     auto s = timer_.measure("ppe_assembly");
-    ppe = assemble_pressure_poisson(ctx_, neighbors_, particles_, prm.gravity, prm.alpha, dt, work_);
+    ppe =
+        assemble_pressure_poisson(ctx_, neighbors_, particles_, prm.gravity, prm.alpha, dt, work_);
   }
   {
     auto s = timer_.measure("ppe_solve");
-    const bool direct = prm.solver == "cholmod" ||
-                        (prm.solver == "auto" && prm.dim == 2 && ppe.unknowns <= 60000);
+    const bool direct =
+        prm.solver == "cholmod" || (prm.solver == "auto" && prm.dim == 2 && ppe.unknowns <= 60000);
     const std::string wanted = direct ? "cholmod" : "pcg";
     if (!solver_ || solver_->name() != wanted)
       solver_ = direct ? make_cholmod_solver()
@@ -191,16 +201,26 @@ StepReport Simulation::step_until(double until) {
     report.ppe_unknowns = ppe.unknowns;
     total_ppe_iterations_ += solve.iterations;
   }
+  if (bodies_) {
+    // P^{n+1} belongs to the positions x^n: take the body loads before the fluid moves.
+    auto s = timer_.measure("body_loads");
+    bodies_->compute_fluid_loads(ctx_, grid_, particles_, prm.gravity);
+  }
   {
     auto s = timer_.measure("corrector");
     max_speed_ = correct_and_advect(ctx_, neighbors_, particles_, work_, prm.gravity, dt,
-                                    prm.pressure_gradient == "symmetric");
+                                    prm.pressure_gradient == "symmetric", prm.surface_smoothing,
+                                    shift_scratch_);
   }
   if (prm.shifting > 0) {
     auto s = timer_.measure("shifting");
     shift_particles(ctx_, neighbors_, particles_, work_, prm.shifting, shift_scratch_);
   }
   for (auto& wall : moving_walls_) set_wall_position(wall, particles_);
+  if (bodies_) {
+    auto s = timer_.measure("bodies");
+    report.substeps = bodies_->advance(time_, dt, prm.gravity, particles_);
+  }
   time_ = t_new;
   ++step_;
   report.step = step_;
@@ -215,8 +235,9 @@ StepReport Simulation::step_until(double until) {
     auto s = timer_.measure("probes");
     evaluate_probes();
   }
-  report.wall_seconds = last_report_.wall_seconds +
-                        std::chrono::duration<double>(std::chrono::steady_clock::now() - wall_start).count();
+  report.wall_seconds =
+      last_report_.wall_seconds +
+      std::chrono::duration<double>(std::chrono::steady_clock::now() - wall_start).count();
   last_report_ = report;
   return report;
 }
@@ -250,16 +271,28 @@ void Simulation::check_health(StepReport& report) {
     throw UnstableError(where.str());
   }
   if (too_fast < n) {
-    where << "runaway velocity: particle " << too_fast << " at " << format_point(particles_, too_fast)
-          << " moves at " << std::sqrt(std::pow(particles_.velocity[0][too_fast], 2) +
-                                       std::pow(particles_.velocity[1][too_fast], 2) +
-                                       std::pow(particles_.velocity[2][too_fast], 2))
+    where << "runaway velocity: particle " << too_fast << " at "
+          << format_point(particles_, too_fast) << " moves at "
+          << std::sqrt(std::pow(particles_.velocity[0][too_fast], 2) +
+                       std::pow(particles_.velocity[1][too_fast], 2) +
+                       std::pow(particles_.velocity[2][too_fast], 2))
           << " m/s (limit max_speed = " << max_speed_limit_ << " m/s)";
     throw UnstableError(where.str());
   }
   if (escaped < n) {
     where << "particle " << escaped << " left the domain at " << format_point(particles_, escaped);
     throw UnstableError(where.str());
+  }
+  for (std::size_t b = 0; bodies_ && b < bodies_->size(); ++b) {
+    const Vec3& x = bodies_->state(b).position;
+    for (int a = 0; a < dim; ++a)
+      if (x[a] < domain_lower_[a] || x[a] > domain_upper_[a]) {
+        where << "body '" << bodies_->name(b) << "' left the domain: its centre of mass is at ("
+              << x.x() << ", " << x.y();
+        if (dim == 3) where << ", " << x.z();
+        where << ") m";
+        throw UnstableError(where.str());
+      }
   }
   // Fluid inside a wall: only particles that see a boundary particle can be there.
   std::size_t inside = 0, new_crossings = 0;
@@ -276,6 +309,15 @@ void Simulation::check_health(StepReport& report) {
         for (const auto& mw : moving_walls_)
           if (mw.wall_index == w) shift = mw.displacement;
         in_wall = model_.walls[w].shape.signed_distance(x - shift, dim) < 0.0;
+      }
+      // Inside a body: test each body it sees once (neighbours of one body come in a row).
+      std::int32_t tested = -1;
+      for (std::uint64_t k = neighbors_.offset[i];
+           k < neighbors_.offset[i + 1] && bodies_ && !in_wall; ++k) {
+        const std::int32_t b = particles_.body[neighbors_.index[k]];
+        if (b < 0 || b == tested) continue;
+        tested = b;
+        in_wall = bodies_->contains(static_cast<std::size_t>(b), x);
       }
     }
     if (in_wall) {
@@ -300,7 +342,8 @@ void Simulation::evaluate_probes() {
       double sum = 0.0;
       // The grid was built at the start of the step; particles moved by at most cfl*h since.
       const double fraction = accumulate_fluid_at(
-          ctx_, grid_, particles_, m, [&](std::uint32_t f, double w) { sum += w * particles_.pressure[f]; });
+          ctx_, grid_, particles_, m,
+          [&](std::uint32_t f, double w) { sum += w * particles_.pressure[f]; });
       value = fraction < kDryFluidFraction ? 0.0 : sum * ctx_.volume / fraction;
     } else if (probe.quantity == ProbeSpec::Quantity::WaterHeight) {
       double top = -std::numeric_limits<double>::max();
@@ -335,7 +378,8 @@ void Simulation::update_boundary_pressures() {
   const double r2max = 4.0 * ctx_.h * ctx_.h;
 #pragma omp parallel for schedule(dynamic, 512)
   for (std::size_t w = particles_.fluid_count; w < n; ++w) {
-    const double x[3] = {particles_.position[0][w], particles_.position[1][w], particles_.position[2][w]};
+    const double x[3] = {particles_.position[0][w], particles_.position[1][w],
+                         particles_.position[2][w]};
     bool sees = false;
     grid_.for_each_candidate(x, [&](std::uint32_t f) {
       if (sees || f >= particles_.fluid_count) return;

@@ -20,6 +20,7 @@ namespace washout {
 namespace io {
 class RunFileWriter;
 }
+class RigidBodySystem;
 
 // The scene cannot be run as given (caught before the first step). `where` names the scene
 // location and `parameter` the offending parameter when known.
@@ -51,7 +52,7 @@ struct StepReport {
   double max_speed = 0.0;
   double kinetic_energy = 0.0;
   std::size_t particles_in_walls = 0;
-  int substeps = 0;
+  long substeps = 0;          // rigid-body sub-steps in this step (0: the scene has no bodies)
   double wall_seconds = 0.0;  // cumulative
 };
 
@@ -101,6 +102,8 @@ class Simulation {
   const StageTimer& timer() const { return timer_; }
   const std::vector<double>& probe_values() const { return probe_values_; }
   const StepReport& last_report() const { return last_report_; }
+  // The rigid bodies and their coupling; null when the scene has none.
+  const RigidBodySystem* bodies() const { return bodies_.get(); }
 
   // One projection step; throws UnstableError when the state blows up.
   StepReport step();
@@ -127,6 +130,7 @@ class Simulation {
   FluidWork work_;
   std::unique_ptr<LinearSolver> solver_;
   std::vector<MovingWall> moving_walls_;
+  std::unique_ptr<RigidBodySystem> bodies_;
   std::vector<std::uint8_t> active_boundary_;
   std::vector<std::uint8_t> inside_wall_;
   std::vector<double> shift_scratch_;

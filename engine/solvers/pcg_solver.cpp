@@ -9,11 +9,14 @@ namespace washout {
 namespace {
 
 constexpr std::size_t kBlock = 4096;
+// Below this many unknowns a PCG iteration is a few microseconds of work: forking threads
+// (and waiting at barriers when another process holds a core) would cost far more.
+constexpr std::size_t kParallelRows = 20000;
 
 double dot(const std::vector<double>& a, const std::vector<double>& b) {
   const std::size_t n = a.size(), blocks = (n + kBlock - 1) / kBlock;
   std::vector<double> partial(blocks, 0.0);
-#pragma omp parallel for schedule(static)
+#pragma omp parallel for schedule(static) if (n > kParallelRows)
   for (std::size_t k = 0; k < blocks; ++k) {
     double s = 0.0;
     const std::size_t end = std::min(n, (k + 1) * kBlock);
@@ -36,7 +39,7 @@ class PcgSolver final : public LinearSolver {
     const std::size_t n = A.rows;
     x.resize(n, 0.0);
     inverse_diagonal_.assign(n, 1.0);
-#pragma omp parallel for schedule(static)
+#pragma omp parallel for schedule(static) if (n > kParallelRows)
     for (std::size_t i = 0; i < n; ++i)
       for (std::int64_t k = A.row_start[i]; k < A.row_start[i + 1]; ++k)
         if (static_cast<std::size_t>(A.column[k]) == i && A.value[k] != 0.0)
@@ -51,7 +54,7 @@ class PcgSolver final : public LinearSolver {
     r_.resize(n);
     z_.resize(n);
     A.multiply(x, q_);
-#pragma omp parallel for schedule(static)
+#pragma omp parallel for schedule(static) if (n > kParallelRows)
     for (std::size_t i = 0; i < n; ++i) {
       r_[i] = b[i] - q_[i];
       z_[i] = inverse_diagonal_[i] * r_[i];
@@ -63,7 +66,7 @@ class PcgSolver final : public LinearSolver {
     while (r_norm > tolerance_ * b_norm && it < max_iterations_) {
       A.multiply(p_, q_);
       const double step = rz / dot(p_, q_);
-#pragma omp parallel for schedule(static)
+#pragma omp parallel for schedule(static) if (n > kParallelRows)
       for (std::size_t i = 0; i < n; ++i) {
         x[i] += step * p_[i];
         r_[i] -= step * q_[i];
@@ -72,7 +75,7 @@ class PcgSolver final : public LinearSolver {
       const double rz_new = dot(r_, z_);
       const double beta = rz_new / rz;
       rz = rz_new;
-#pragma omp parallel for schedule(static)
+#pragma omp parallel for schedule(static) if (n > kParallelRows)
       for (std::size_t i = 0; i < n; ++i) p_[i] = z_[i] + beta * p_[i];
       r_norm = std::sqrt(dot(r_, r_));
       ++it;

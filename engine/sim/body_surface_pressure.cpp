@@ -1,0 +1,40 @@
+#include "engine/sim/body_surface_pressure.hpp"
+
+#include <algorithm>
+
+#include "engine/fluid/fluid_interpolation.hpp"
+
+namespace washout {
+
+void body_surface_pressure(const SphContext& ctx, const NeighborGrid& grid, const Particles& p,
+                           const Vec3& gravity, std::span<const std::uint32_t> particles,
+                           std::vector<double>& pressure) {
+  const std::size_t count = particles.size();
+  pressure.resize(count);
+#pragma omp parallel for schedule(dynamic, 64)
+  for (std::size_t k = 0; k < count; ++k) {
+    const std::uint32_t w = particles[k];
+    double m[3], s[3];
+    for (int a = 0; a < 3; ++a) {
+      const double dn = p.wall_distance[w] * p.normal[a][w];
+      s[a] = p.position[a][w] + dn;
+      m[a] = p.position[a][w] + 2.0 * dn;
+    }
+    double sum = 0.0;
+    const double fraction = accumulate_fluid_at(ctx, grid, p, m, [&](std::uint32_t f, double W) {
+      double d[3] = {s[0] - p.position[0][f], s[1] - p.position[1][f], s[2] - p.position[2][f]};
+      if (ctx.periodic.any()) ctx.periodic.minimum_image(d);
+      double head = 0.0;
+      for (int a = 0; a < ctx.dim; ++a) head += gravity[a] * d[a];
+      sum += W * (p.pressure[f] + ctx.rho0 * head);
+    });
+    double value = 0.0;
+    if (fraction >= kDryFluidFraction) {
+      value = sum * ctx.volume / fraction;
+      if (fraction < kWetFluidFraction) value = std::max(value, 0.0);
+    }
+    pressure[k] = value;
+  }
+}
+
+}  // namespace washout

@@ -1,0 +1,29 @@
+#pragma once
+// The fluid pressure on a body's surface, for the hydrodynamic load F_f = sum -P_i n_i dS_i
+// (METHOD.md Rigid bodies). A surface particle w sits at depth d_w below the surface, so its own
+// (virtual-marker) pressure would miss the last d_w of head: the buoyancy of a box would come
+// out short by d0/height (docs/rigid_bodies.md). The pressure is instead taken on the surface
+// point s = x_w + d_w n_w, from the fluid around the mirror point m = x_w + 2 d_w n_w:
+//   P(s) = sum_f W(m - x_f) [P_f + rho0 g . (s - x_f)] / sum_f W(m - x_f),
+// each fluid particle's pressure carried to s by the hydrostatic gradient. This is exact for a
+// fluid at rest however the kernel support is cut by the body or the free surface, and keeps
+// the Shepard interpolation's accuracy where the flow adds a dynamic pressure. Dry points (fluid
+// fraction below kDryFluidFraction) take P = 0; points at the free surface (fraction below
+// kWetFluidFraction) take no negative pressure, which the hydrostatic carry would give above
+// the water line.
+#include <cstdint>
+#include <span>
+#include <vector>
+
+#include "engine/core/neighbor_grid.hpp"
+#include "engine/fluid/sph_context.hpp"
+
+namespace washout {
+
+// pressure[k] = P(s) for boundary particle particles[k]; the grid must hold the fluid at the
+// positions the pressure was solved for.
+void body_surface_pressure(const SphContext& ctx, const NeighborGrid& grid, const Particles& p,
+                           const Vec3& gravity, std::span<const std::uint32_t> particles,
+                           std::vector<double>& pressure);
+
+}  // namespace washout

@@ -1,0 +1,275 @@
+#include "engine/sim/rigid_body_system.hpp"
+
+#include <cmath>
+#include <span>
+#include <sstream>
+#include <stdexcept>
+
+#include "engine/contact/shape_wall.hpp"
+#include "engine/io/run_file_writer.hpp"
+#include "engine/rigid/hydrodynamic_load.hpp"
+#include "engine/sim/body_surface_pressure.hpp"
+#include "engine/sim/simulation.hpp"
+
+namespace washout {
+namespace {
+
+contact::ContactSettings contact_settings(const ContactSpec& spec) {
+  contact::ContactSettings s;
+  s.law = spec.law == "hertz" ? contact::ContactLaw::kHertz : contact::ContactLaw::kLinear;
+  s.damping_mass = spec.damping_mass == "whole_body" ? contact::DampingMass::kWholeBody
+                                                     : contact::DampingMass::kShared;
+  s.allow_tension = spec.allow_tension;
+  s.steps_per_contact = spec.steps_per_contact;
+  s.max_substeps = spec.max_substeps;
+  return s;
+}
+
+// Materials by name ("default" unless the scene defines it: the paper's PLA), the fixed walls
+// (moving walls take no part in contact) and the per-pair friction and restitution.
+contact::ContactScene make_contact_scene(const Model& model) {
+  contact::ContactScene scene;
+  scene.settings = contact_settings(model.contact);
+  for (const auto& m : model.materials)
+    scene.materials.add({m.name, m.young_modulus, m.poisson_ratio, m.restitution});
+  if (scene.materials.find("default") < 0) scene.materials.add({"default"});
+  auto id = [&](const std::string& name, const SourceLocation& where) {
+    const int k = scene.materials.find(name.empty() ? "default" : name);
+    if (k < 0)
+      throw SceneError("unknown contact material '" + name + "' (define it with washout.material)",
+                       where, "material");
+    return k;
+  };
+  for (const auto& f : model.frictions) {
+    const int a = id(f.material_a, f.where), b = id(f.material_b, f.where);
+    scene.materials.set_friction(a, b, f.friction);
+    if (f.restitution >= 0.0) scene.materials.set_restitution(a, b, f.restitution);
+  }
+  for (const auto& wall : model.walls) {
+    const int material = id(wall.material, wall.where);
+    if (wall.moving()) continue;
+    scene.walls.push_back(
+        {wall.name, contact::wall_shape_from(wall.shape, model.params.dim), material});
+  }
+  return scene;
+}
+
+std::string format_vector(const Vec3& v, int dim) {
+  std::ostringstream o;
+  o << "(" << v.x() << ", " << v.y();
+  if (dim == 3) o << ", " << v.z();
+  o << ")";
+  return o.str();
+}
+
+}  // namespace
+
+RigidBodySystem::RigidBodySystem(const Model& model, std::vector<BuiltBody> bodies,
+                                 std::vector<std::size_t> first_particle)
+    : dim_(model.params.dim), first_(std::move(first_particle)) {
+  contact_ = make_contact_scene(model);
+  const std::size_t count = bodies.size();
+  surface_begin_.push_back(0);
+  for (std::size_t b = 0; b < count; ++b) {
+    BuiltBody& built = bodies[b];
+    const BodySpec& spec = model.bodies[b];
+    built.model.material =
+        contact_.materials.find(spec.material.empty() ? "default" : spec.material);
+    if (built.model.material < 0)
+      throw SceneError("unknown contact material '" + spec.material + "' of body '" + spec.name +
+                           "' (define it with washout.material)",
+                       spec.where, "material");
+    rigid::Vec3Array normal;
+    for (const Vec3& n : built.normal) normal.push_back(n);
+    reference_normal_.push_back(std::move(normal));
+    for (const std::int32_t k : built.model.surface_index)
+      surface_particles_.push_back(static_cast<std::uint32_t>(first_[b] + k));
+    surface_begin_.push_back(surface_particles_.size());
+    shapes_.push_back(spec.shape);
+    volumes_.push_back(built.solid.volume);
+    angles_.emplace_back(dim_ == 2 ? Vec3::UnitZ() : spec.angle_axis);
+    angles_.back().update(built.initial.orientation);
+    AddedMass added;
+    if (built.model.motion == rigid::MotionKind::kDynamic && spec.added_mass > 0.0) {
+      added.mass = spec.added_mass * model.params.rho0 * built.solid.volume;
+      added.inertia = spec.added_mass * model.params.rho0 * built.solid.inertia_per_density;
+    }
+    added_.push_back(added);
+    integrator_models_.push_back(added.mass > 0.0 ? with_added_mass(built.model, added)
+                                                  : built.model);
+    models_.push_back(std::move(built.model));
+    states_.push_back(built.initial);
+  }
+  previous_states_ = states_;
+  fluid_loads_.assign(count, {});
+  contact_loads_.assign(count, {});
+  series_.resize(count);
+  last_report_.contact_load.assign(count, {});
+}
+
+void RigidBodySystem::place_body(std::size_t b, Particles& p) const {
+  const rigid::BodyModel& model = models_[b];
+  const rigid::BodyState& s = states_[b];
+  const Eigen::Matrix3d R = s.orientation.toRotationMatrix();
+  const rigid::Vec3Array& r0 = model.offset;
+  const rigid::Vec3Array& n0 = reference_normal_[b];
+  const std::size_t first = first_[b];
+  // METHOD.md Rigid bodies: x_i = X + R r0_i, u_i = T + w x (R r0_i); normals turn with R.
+  for (std::size_t k = 0; k < r0.size(); ++k) {
+    const Vec3 r = R * r0[k];
+    const Vec3 u = s.velocity + s.angular_velocity.cross(r);
+    const Vec3 n = R * n0[k];
+    const std::size_t i = first + k;
+    for (int a = 0; a < dim_; ++a) {
+      p.position[a][i] = s.position[a] + r[a];
+      p.velocity[a][i] = u[a];
+      p.normal[a][i] = n[a];
+    }
+  }
+}
+
+void RigidBodySystem::place_particles(Particles& p) const {
+  for (std::size_t b = 0; b < size(); ++b) place_body(b, p);
+}
+
+void RigidBodySystem::set_prescribed_velocities(double t, Particles& p) const {
+  for (std::size_t b = 0; b < size(); ++b) {
+    const rigid::BodyModel& model = models_[b];
+    if (model.motion != rigid::MotionKind::kPrescribed) continue;
+    const rigid::BodyState next = model.prescribed(t);
+    const std::size_t first = first_[b];
+    for (std::size_t k = 0; k < model.offset.size(); ++k) {
+      const std::size_t i = first + k;
+      const Vec3 r = p.x(i) - states_[b].position;
+      const Vec3 u = next.velocity + next.angular_velocity.cross(r);
+      for (int a = 0; a < dim_; ++a) p.velocity[a][i] = u[a];
+    }
+  }
+}
+
+// Hydrodynamic load, METHOD.md Rigid bodies: F_f = sum -P_i n_i dS_i, M_f = sum r_i x (-P_i n_i
+// dS_i), with P_i the pressure on the surface point s_i = x_i + d_i n_i (also the arm r_i) and
+// n_i dS_i the particle's share of the surface (body_builder.hpp).
+void RigidBodySystem::compute_fluid_loads(const SphContext& ctx, const NeighborGrid& grid,
+                                          const Particles& p, const Vec3& gravity) {
+  body_surface_pressure(ctx, grid, p, gravity, surface_particles_, surface_pressure_);
+  for (std::size_t b = 0; b < size(); ++b) {
+    const std::size_t begin = surface_begin_[b], end = surface_begin_[b + 1];
+    const Eigen::Matrix3d R = states_[b].orientation.toRotationMatrix();
+    const rigid::Vec3Array& surface_normal = models_[b].surface_normal;
+    load_point_.resize(end - begin);
+    load_normal_.resize(end - begin);
+    for (std::size_t k = begin; k < end; ++k) {
+      const std::uint32_t i = surface_particles_[k];
+      const Vec3 n_wall(p.normal[0][i], p.normal[1][i], p.normal[2][i]);
+      load_point_.set(k - begin, p.x(i) + p.wall_distance[i] * n_wall);
+      load_normal_.set(k - begin, R * surface_normal[k - begin]);
+    }
+    fluid_loads_[b] = rigid::hydrodynamic_load(
+        std::span<const double>(surface_pressure_).subspan(begin, end - begin), load_point_,
+        load_normal_, models_[b].surface_area, states_[b].position);
+    if (dim_ == 2) {
+      fluid_loads_[b].force.z() = 0.0;
+      fluid_loads_[b].torque.x() = fluid_loads_[b].torque.y() = 0.0;
+    }
+  }
+}
+
+long RigidBodySystem::advance(double t, double dt, const Vec3& gravity, Particles& p) {
+  integrator_loads_.resize(size());
+  for (std::size_t b = 0; b < size(); ++b)
+    integrator_loads_[b] = added_[b].mass > 0.0
+                               ? added_mass_load(fluid_loads_[b], added_[b], states_[b],
+                                                 previous_states_[b], previous_dt_, gravity)
+                               : fluid_loads_[b];
+  previous_states_ = states_;
+  previous_dt_ = dt;
+  try {
+    last_report_ = contact::advance_bodies(integrator_models_, states_, integrator_loads_, contact_,
+                                           workspace_, gravity, t, dt);
+  } catch (const SceneError&) {
+    throw;  // a prescribed motion that failed: the scene's fault
+  } catch (const std::runtime_error& e) {
+    throw UnstableError(std::string("rigid bodies: ") + e.what());
+  }
+  contact_loads_ = last_report_.contact_load;
+  for (std::size_t b = 0; b < size(); ++b) {
+    const rigid::BodyState& s = states_[b];
+    const bool finite = s.position.allFinite() && s.velocity.allFinite() &&
+                        s.angular_velocity.allFinite() && s.orientation.coeffs().allFinite();
+    if (!finite)
+      throw UnstableError("body '" + name(b) + "' has a non-finite state (fluid load " +
+                          format_vector(fluid_loads_[b].force, dim_) + " N, contact load " +
+                          format_vector(contact_loads_[b].force, dim_) + " N)");
+    angles_[b].update(s.orientation);
+    if (models_[b].motion != rigid::MotionKind::kFixed) place_body(b, p);
+  }
+  return last_report_.substeps;
+}
+
+bool RigidBodySystem::contains(std::size_t b, const Vec3& x) const {
+  const rigid::BodyState& s = states_[b];
+  const Vec3 reference = s.orientation.conjugate() * (x - s.position) + models_[b].centre_of_mass;
+  return shapes_[b].signed_distance(reference, dim_) < 0.0;
+}
+
+void RigidBodySystem::record(double time) {
+  for (std::size_t b = 0; b < size(); ++b) {
+    Series& out = series_[b];
+    const rigid::BodyState& s = states_[b];
+    auto push = [](std::vector<double>& v, const Vec3& x) {
+      v.insert(v.end(), {x[0], x[1], x[2]});
+    };
+    out.time.push_back(time);
+    push(out.position, s.position);
+    const Eigen::Quaterniond& q = s.orientation;
+    out.quaternion.insert(out.quaternion.end(), {q.w(), q.x(), q.y(), q.z()});
+    push(out.velocity, s.velocity);
+    push(out.omega, s.angular_velocity);
+    push(out.force_fluid, fluid_loads_[b].force);
+    push(out.force_contact, contact_loads_[b].force);
+    push(out.torque_fluid, fluid_loads_[b].torque);
+    push(out.torque_contact, contact_loads_[b].torque);
+    out.angle.push_back(angles_[b].angle());
+  }
+}
+
+void RigidBodySystem::flush(io::RunFileWriter& writer) {
+  for (std::size_t b = 0; b < size(); ++b) {
+    const std::string group = "/bodies/" + name(b);
+    if (!attributes_written_) {
+      const Vec3& a = angles_[b].axis();
+      std::ostringstream axis, mass, volume;
+      axis << a.x() << " " << a.y() << " " << a.z();
+      mass.precision(17);
+      mass << models_[b].mass;
+      volume.precision(17);
+      volume << volumes_[b];
+      writer.set_string_attribute(group, "rows",
+                                  "step: one row per fluid step, the state after the step and "
+                                  "the loads applied during it");
+      writer.set_string_attribute(group, "angle_axis", axis.str());
+      writer.set_string_attribute(group, "mass", mass.str());
+      writer.set_string_attribute(group, "volume", volume.str());
+    }
+    Series& s = series_[b];
+    const std::size_t rows = s.time.size();
+    if (rows == 0) continue;
+    writer.append(group + "/time", s.time.data(), rows);
+    writer.append(group + "/position", s.position.data(), rows, 3);
+    writer.append(group + "/quaternion", s.quaternion.data(), rows, 4);
+    writer.append(group + "/velocity", s.velocity.data(), rows, 3);
+    writer.append(group + "/omega", s.omega.data(), rows, 3);
+    writer.append(group + "/force_fluid", s.force_fluid.data(), rows, 3);
+    writer.append(group + "/force_contact", s.force_contact.data(), rows, 3);
+    writer.append(group + "/torque_fluid", s.torque_fluid.data(), rows, 3);
+    writer.append(group + "/torque_contact", s.torque_contact.data(), rows, 3);
+    writer.append(group + "/angle", s.angle.data(), rows);
+    for (auto* v : {&s.time, &s.position, &s.quaternion, &s.velocity, &s.omega, &s.force_fluid,
+                    &s.force_contact, &s.torque_fluid, &s.torque_contact, &s.angle})
+      v->clear();
+  }
+  attributes_written_ = true;
+}
+
+}  // namespace washout

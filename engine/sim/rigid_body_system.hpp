@@ -1,0 +1,102 @@
+#pragma once
+// The rigid bodies of a run and their two-way coupling with the fluid (METHOD.md Rigid bodies
+// and Contact; docs/bodies.md). Built only when a scene has bodies. In each fluid step:
+//   1. before the pressure solve, the body particles carry the body's velocity (prescribed
+//      bodies: at the new time, like moving walls), so that the wall treatment (virtual markers,
+//      the Neumann condition of the PPE) sees them as walls that move;
+//   2. after the solve, the surface pressure gives F_f and M_f (body_surface_pressure.hpp);
+//   3. after the fluid has moved, advance_bodies integrates every body over the step with the
+//      fluid load held, sub-stepped for contact with the fixed walls and between bodies, with
+//      the added-mass stabilisation of added_mass_coupling.hpp;
+//   4. the body particles follow: x = X + R r0, u = T + w x R r0, n = R n0.
+#include <cstdint>
+#include <string>
+#include <vector>
+
+#include "engine/contact/contact_substepper.hpp"
+#include "engine/core/neighbor_grid.hpp"
+#include "engine/fluid/sph_context.hpp"
+#include "engine/model/model.hpp"
+#include "engine/rigid/rotation_angle.hpp"
+#include "engine/sim/added_mass_coupling.hpp"
+#include "engine/sim/body_builder.hpp"
+
+namespace washout {
+
+namespace io {
+class RunFileWriter;
+}
+
+class RigidBodySystem {
+ public:
+  // bodies[b]'s particles are p's indices [first_particle[b], first_particle[b] + count), in the
+  // order of its model's offsets. Throws SceneError for an unknown contact material.
+  RigidBodySystem(const Model& model, std::vector<BuiltBody> bodies,
+                  std::vector<std::size_t> first_particle);
+
+  std::size_t size() const { return models_.size(); }
+  const std::string& name(std::size_t b) const { return models_[b].name; }
+  const rigid::BodyModel& model(std::size_t b) const { return models_[b]; }
+  const rigid::BodyState& state(std::size_t b) const { return states_[b]; }
+  const rigid::BodyLoad& fluid_load(std::size_t b) const { return fluid_loads_[b]; }
+  const rigid::BodyLoad& contact_load(std::size_t b) const { return contact_loads_[b]; }
+  double angle(std::size_t b) const { return angles_[b].angle(); }  // about angle_axis [rad]
+  const Vec3& angle_axis(std::size_t b) const { return angles_[b].axis(); }
+  double volume(std::size_t b) const { return volumes_[b]; }
+  const contact::ContactScene& contact_scene() const { return contact_; }
+  const contact::SubstepReport& last_substeps() const { return last_report_; }
+
+  // Positions, velocities and normals of every body particle from the bodies' states.
+  void place_particles(Particles& p) const;
+  // Prescribed bodies' particle velocities at the new time t (before the pressure solve).
+  void set_prescribed_velocities(double t, Particles& p) const;
+  // F_f, M_f of every body from the pressure just solved (fluid not yet moved).
+  void compute_fluid_loads(const SphContext& ctx, const NeighborGrid& grid, const Particles& p,
+                           const Vec3& gravity);
+  // Every body from t to t + dt with contact sub-steps, then its particles. Returns the number
+  // of sub-steps; throws UnstableError when a body's state blows up or sub-stepping fails.
+  long advance(double t, double dt, const Vec3& gravity, Particles& p);
+  // Whether x lies inside body b's shape in its current pose.
+  bool contains(std::size_t b, const Vec3& x) const;
+
+  // One output row per body after each step; appended to /bodies/NAME at each frame.
+  void record(double time);
+  void flush(io::RunFileWriter& writer);
+
+ private:
+  void place_body(std::size_t b, Particles& p) const;
+
+  int dim_ = 2;
+  std::vector<rigid::BodyModel> models_;
+  std::vector<rigid::BodyState> states_;
+  // Added-mass stabilisation: what the integrator sees (M + m', I + J'), the states one step
+  // back and that step's length.
+  std::vector<AddedMass> added_;
+  std::vector<rigid::BodyModel> integrator_models_;
+  std::vector<rigid::BodyState> previous_states_;
+  std::vector<rigid::BodyLoad> integrator_loads_;
+  double previous_dt_ = 0.0;
+  std::vector<rigid::BodyLoad> fluid_loads_, contact_loads_;
+  std::vector<rigid::RotationAngleTracker> angles_;
+  std::vector<Shape> shapes_;  // in the reference pose (q = identity, X = centre of mass)
+  std::vector<double> volumes_;
+  std::vector<std::size_t> first_;
+  std::vector<rigid::Vec3Array> reference_normal_;  // n0 per particle, body frame
+  // Surface particles of all bodies (particle indices), body b's at [surface_begin_[b], [b+1]).
+  std::vector<std::uint32_t> surface_particles_;
+  std::vector<std::size_t> surface_begin_;
+  std::vector<double> surface_pressure_;
+  rigid::Vec3Array load_point_, load_normal_;  // scratch
+  contact::ContactScene contact_;
+  contact::ContactWorkspace workspace_;
+  contact::SubstepReport last_report_;
+
+  struct Series {
+    std::vector<double> time, position, quaternion, velocity, omega, force_fluid, force_contact,
+        torque_fluid, torque_contact, angle;
+  };
+  std::vector<Series> series_;
+  bool attributes_written_ = false;
+};
+
+}  // namespace washout

@@ -1,0 +1,65 @@
+// A heavy box sinks in still water, lands on the floor and comes to rest on it without passing
+// through (scenes/sinking_box_2d.lua), at two resolutions. Long: the contact sub-steps run
+// serially inside every fluid step once the box touches.
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+#include <string>
+
+#include "support/scene_runner.hpp"
+
+namespace washout {
+namespace {
+
+// Bounds:
+//  - never through the floor: the bottom (X - H/2) stays above -d0/100; the linear contact's
+//    static overlap (M - rho_w V) g / (N k_n) is about 1e-9 m here, and an impact at
+//    v ~ 0.5 m/s with 20 sub-steps per contact overshoots it by v t_c ~ 1e-5 m at most;
+//  - at rest over the last 0.2 s: speed below 5e-3 m/s (the still water's own noise moves the
+//    fluid at about 1e-2 m/s, and the box sits on stiff springs);
+//  - resting on the floor: the bottom within d0/100 of it;
+//  - the floor carries the weight less the buoyancy: F_c + F_f = M g within 5 % (the pressure
+//    under a box resting on the floor is that of the fluid the contact leaves there);
+//  - sub-stepped while touching: /stats/substeps above 1 at the end.
+TEST(SinkingBoxLong, LandsAndRestsOnTheFloor) {
+  const double B = 0.08, H = 0.04, rho_b = 2000.0, g = 9.81;
+  const double weight = rho_b * B * H * g;
+  for (double d0 : {0.01, 0.005}) {
+    char name[64];
+    std::snprintf(name, sizeof name, "sinking_box_%g", d0);
+    const cli::RunOutcome outcome =
+        testing::run_scene("sinking_box_2d.lua", name, {{"d0", std::to_string(d0)}});
+    io::RunFileReader file(outcome.h5_path);
+    const auto time = file.read_doubles("/bodies/box/time");
+    const auto x = file.read_doubles("/bodies/box/position");
+    const auto v = file.read_doubles("/bodies/box/velocity");
+    const auto fc = file.read_doubles("/bodies/box/force_contact");
+    const auto ff = file.read_doubles("/bodies/box/force_fluid");
+    const auto substeps = file.read_doubles("/stats/substeps");
+    double lowest = 1.0, speed = 0, balance = 0;
+    int n = 0;
+    for (std::size_t r = 0; r < time.size(); ++r) {
+      lowest = std::min(lowest, x[3 * r + 1] - 0.5 * H);
+      if (time[r] < time.back() - 0.2) continue;
+      speed = std::max(speed, std::hypot(v[3 * r], v[3 * r + 1]));
+      balance += fc[3 * r + 1] + ff[3 * r + 1];
+      ++n;
+    }
+    balance /= n;
+    const double bottom = x[3 * (time.size() - 1) + 1] - 0.5 * H;
+    std::printf(
+        "d0 = %.3f m: lowest bottom %.2e m, final bottom %.2e m, speed %.1e m/s, "
+        "(F_c + F_f) / M g - 1 = %+.2f %%, sub-steps in the last step %.0f\n",
+        d0, lowest, bottom, speed, 100 * (balance / weight - 1), substeps.back());
+    EXPECT_GT(lowest, -0.01 * d0);
+    EXPECT_LT(std::abs(bottom), 0.01 * d0);
+    EXPECT_LT(speed, 5e-3);
+    EXPECT_LT(std::abs(balance / weight - 1), 0.05);
+    EXPECT_GT(substeps.back(), 1.0);
+  }
+}
+
+}  // namespace
+}  // namespace washout

@@ -1,0 +1,80 @@
+// A box of density 500 released in still water settles at its Archimedes draft
+// D = (rho_b / rho_w) H (scenes/floating_box_2d.lua, scenes/floating_box_3d.lua), at two
+// resolutions each. Long: minutes per run.
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <cstdio>
+#include <string>
+#include <vector>
+
+#include "support/scene_runner.hpp"
+
+namespace washout {
+namespace {
+
+struct Settled {
+  double draft = 0, spread = 0, angle = 0;  // over the window
+};
+
+// The draft D_m = level - bottom averaged over the last second: level from the water-height
+// probes away from the box (interpolated to the body's rows), bottom = X - H/2.
+Settled settle(const std::string& scene, int dim, double d0, double end_time) {
+  char name[64];
+  std::snprintf(name, sizeof name, "floating_%dd_%g", dim, d0);
+  const cli::RunOutcome outcome = testing::run_scene(scene, name, {{"d0", std::to_string(d0)}});
+  io::RunFileReader file(outcome.h5_path);
+  const auto time = file.read_doubles("/bodies/box/time");
+  const auto position = file.read_doubles("/bodies/box/position");
+  const auto angle = file.read_doubles("/bodies/box/angle");
+  std::vector<std::string> probes = dim == 2 ? std::vector<std::string>{"level_left", "level_right"}
+                                             : std::vector<std::string>{"level"};
+  Settled s;
+  double sum2 = 0;
+  int n = 0;
+  const int up = dim - 1;
+  for (std::size_t r = 0; r < time.size(); ++r) {
+    if (time[r] < end_time - 1.0) continue;
+    double level = 0;
+    for (const auto& p : probes)
+      level += testing::interpolate(file.read_doubles("/probes/" + p + "/time"),
+                                    file.read_doubles("/probes/" + p + "/value"), time[r]);
+    level /= probes.size();
+    const double draft = level - (position[3 * r + up] - 0.05);
+    s.draft += draft;
+    sum2 += draft * draft;
+    s.angle = std::max(s.angle, std::abs(angle[r]));
+    ++n;
+  }
+  s.draft /= n;
+  s.spread = std::sqrt(std::max(0.0, sum2 / n - s.draft * s.draft));
+  return s;
+}
+
+// Bounds: the mean draft within one particle spacing of D (the free surface is resolved to
+// d0: P = 0 sits on the surface particles' centres, d0/2 below the water's edge, see
+// test_floating_box.cpp); settled: the draft's standard deviation over the last second below
+// 0.1 D (a heave of +-0.14 D at most; radiation damps the start-up within a few periods); upright:
+// roll below 0.05 rad.
+void expect_settled(const std::string& scene, int dim, double d0, double end_time) {
+  const double D = 0.05;
+  const Settled s = settle(scene, dim, d0, end_time);
+  std::printf(
+      "%dD, d0 = %.4f m: draft %.4f m against D = %.4f m: error %+.1f %% (bound %.0f %%), "
+      "spread %.4f m, largest roll %.3f rad\n",
+      dim, d0, s.draft, D, 100 * (s.draft / D - 1), 100 * d0 / D, s.spread, s.angle);
+  EXPECT_LT(std::abs(s.draft - D), d0);
+  EXPECT_LT(s.spread, 0.1 * D);
+  EXPECT_LT(s.angle, 0.05);
+}
+
+TEST(FloatingBoxLong, SettlesAtTheArchimedesDraft2D) {
+  for (double d0 : {0.01, 0.005}) expect_settled("floating_box_2d.lua", 2, d0, 3.0);
+}
+
+TEST(FloatingBoxLong, SettlesAtTheArchimedesDraft3D) {
+  for (double d0 : {0.02, 0.01}) expect_settled("floating_box_3d.lua", 3, d0, 2.0);
+}
+
+}  // namespace
+}  // namespace washout

@@ -1,0 +1,79 @@
+// Dam break of Martin & Moyce (1952), n^2 = 2: surge front Z = x/a against T = t sqrt(2g/a),
+// compared with their Table 2 (refdata/mm1952_n2_front_table.csv, Ocellaris transcription).
+#include <gtest/gtest.h>
+
+#include <cmath>
+
+#include "support/scene_runner.hpp"
+
+namespace washout {
+namespace {
+
+constexpr double kColumn = 0.146;  // a [m], as in the scenes
+
+// RMS of Z_sim - Z_exp over the table's points with T <= the run's end.
+double front_rms(const std::string& h5, double* mean_error) {
+  io::RunFileReader run(h5);
+  const auto t = run.read_doubles("/probes/front/time");
+  const auto x = run.read_doubles("/probes/front/value");
+  std::vector<double> T, Z;
+  for (std::size_t k = 0; k < t.size(); ++k) {
+    T.push_back(t[k] * std::sqrt(2 * 9.81 / kColumn));
+    Z.push_back(x[k] / kColumn);
+  }
+  const auto csv = testing::read_csv(testing::refdata("mm1952_n2_front_table.csv"));
+  double sum2 = 0, sum = 0;
+  int count = 0;
+  for (std::size_t k = 0; k < csv.at("source").size(); ++k) {
+    if (csv.at("source")[k] != "ocellaris_table2") continue;
+    const double Tr = std::stod(csv.at("T_t_sqrt_2g_over_a")[k]);
+    const double Zr = std::stod(csv.at("Z_x_over_a")[k]);
+    if (Tr > T.back()) continue;
+    const double e = testing::interpolate(T, Z, Tr) - Zr;
+    std::printf("  T = %.2f  Z_exp = %.2f  Z_sim = %.3f\n", Tr, Zr, Zr + e);
+    sum2 += e * e, sum += e, ++count;
+  }
+  EXPECT_GE(count, 12);
+  *mean_error = sum / count;
+  return std::sqrt(sum2 / count);
+}
+
+// Bounds: Martin & Moyce's front is known to lag inviscid solutions at early times (the
+// release of their column was not instantaneous), and SPH codes on this case report RMS errors
+// of 0.066 to 0.087 with the front running early. We bound what washout measures now with a
+// margin of about 20 %, so that a regression shows.
+TEST(DamBreak, Front2dCoarse) {
+  const auto out = testing::run_scene("dambreak_2d.lua", "dambreak_2d_a10", {{"d0", "0.0146"}});
+  ASSERT_EQ(out.exit_code, 0);
+  double mean = 0;
+  const double rms = front_rms(out.h5_path, &mean);
+  std::printf("dam break 2D, a/d0 = 10: front RMS error %.4f (mean %+.4f), %ld steps, %.1f s\n", rms,
+              mean, out.summary.steps, out.summary.wall_seconds);
+  EXPECT_LT(rms, 0.08);
+  EXPECT_EQ(out.summary.wall_crossings, 0);
+}
+
+TEST(DamBreak, Front2dDefault) {
+  const auto out = testing::run_scene("dambreak_2d.lua", "dambreak_2d_a20", {});
+  ASSERT_EQ(out.exit_code, 0);
+  double mean = 0;
+  const double rms = front_rms(out.h5_path, &mean);
+  std::printf("dam break 2D, a/d0 = 20: front RMS error %.4f (mean %+.4f), %ld steps, %.1f s\n", rms,
+              mean, out.summary.steps, out.summary.wall_seconds);
+  EXPECT_LT(rms, 0.25);
+  EXPECT_GT(mean, 0.0);  // the front runs early, as in the other SPH codes
+  EXPECT_EQ(out.summary.wall_crossings, 0);
+}
+
+TEST(DamBreak, Front3dCoarse) {
+  const auto out = testing::run_scene("dambreak_3d.lua", "dambreak_3d_a10", {{"d0", "0.0146"}});
+  ASSERT_EQ(out.exit_code, 0);
+  double mean = 0;
+  const double rms = front_rms(out.h5_path, &mean);
+  std::printf("dam break 3D, a/d0 = 10: front RMS error %.4f (mean %+.4f), %ld steps, %.1f s\n", rms,
+              mean, out.summary.steps, out.summary.wall_seconds);
+  EXPECT_LT(rms, 0.15);
+}
+
+}  // namespace
+}  // namespace washout

@@ -1,0 +1,62 @@
+// A box of density 500 held in still water at its Archimedes draft D = (rho_b / rho_w) H
+// (scenes/floating_box_2d.lua with motion = "fixed"): the fluid's pressure on it must carry its
+// weight, F_f = M g, at two resolutions. This is the static half of the floating-box check;
+// the release-and-settle half is tests/scene/long_floating_box.cpp.
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <cstdio>
+#include <string>
+
+#include "support/scene_runner.hpp"
+
+namespace washout {
+namespace {
+
+// The free surface is resolved to within a particle spacing: P = 0 is imposed on the centres of
+// the surface particles, d0/2 below the water's edge (hydrostatic_2d.lua: the pressure's zero
+// lies at 0.0975 m for water 0.1 m deep at d0 = 0.005), so the pressure carries a draft short
+// by d0/2: F_f = M g (1 - d0 / (2 D)) is expected, -10 % at d0 = 0.01 m (D = 5 d0) and -5 % at
+// d0 = 0.005 m. Bound: |F_f / (M g) - 1| <= d0 / D, one particle spacing of draft, and the error
+// must shrink with d0. The horizontal force and the torque vanish by symmetry (0.1 %).
+TEST(FloatingBox, PressureCarriesTheWeightAtTheArchimedesDraft) {
+  const double B = 0.2, H = 0.1, rho_b = 500.0, rho_w = 1000.0, g = 9.81;
+  const double D = rho_b / rho_w * H, weight = rho_b * B * H * g;
+  double previous = 1.0;
+  for (double d0 : {0.01, 0.005}) {
+    char name[64];
+    std::snprintf(name, sizeof name, "floating_box_fixed_%g", d0);
+    const cli::RunOutcome outcome = testing::run_scene("floating_box_2d.lua", name,
+                                                       {{"d0", std::to_string(d0)},
+                                                        {"motion", "fixed"},
+                                                        {"start_draft", std::to_string(D)},
+                                                        {"end_time", "0.5"},
+                                                        {"output_interval", "0.1"}});
+    io::RunFileReader file(outcome.h5_path);
+    const auto time = file.read_doubles("/bodies/box/time");
+    const auto force = file.read_doubles("/bodies/box/force_fluid");
+    const auto torque = file.read_doubles("/bodies/box/torque_fluid");
+    double fy = 0, fx = 0, mz = 0;
+    int n = 0;
+    for (std::size_t r = 0; r < time.size(); ++r) {
+      if (time[r] < 0.1) continue;  // the start-up of the fluid's discrete equilibrium
+      fx += force[3 * r], fy += force[3 * r + 1], mz += torque[3 * r + 2];
+      ++n;
+    }
+    fx /= n, fy /= n, mz /= n;
+    const double error = fy / weight - 1.0;
+    std::printf(
+        "d0 = %.3f m: F_f = %.3f N/m, M g = %.3f N/m: error %+.2f %% (bound %.0f %%); "
+        "against M g (1 - d0/2D): %+.2f %%; F_x / M g = %.1e, M_z / (M g B) = %.1e\n",
+        d0, fy, weight, 100 * error, 100 * d0 / D, 100 * (fy / (weight * (1 - 0.5 * d0 / D)) - 1),
+        fx / weight, mz / (weight * B));
+    EXPECT_LT(std::abs(error), d0 / D);
+    EXPECT_LT(std::abs(error), std::abs(previous)) << "no convergence with d0";
+    EXPECT_LT(std::abs(fx) / weight, 1e-3);
+    EXPECT_LT(std::abs(mz) / (weight * B), 1e-3);
+    previous = error;
+  }
+}
+
+}  // namespace
+}  // namespace washout

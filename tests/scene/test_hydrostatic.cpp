@@ -1,0 +1,86 @@
+// Water at rest: the pressure must settle to rho g (H - y) and no particle may enter a wall.
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <cmath>
+
+#include "support/scene_runner.hpp"
+
+namespace washout {
+namespace {
+
+struct HydrostaticError {
+  double max_interior = 0.0;  // max |P - rho g (H - y)| / (rho g H) over interior particles
+  double max_speed = 0.0;
+};
+
+HydrostaticError measure(const io::FrameData& f, double H, double d0) {
+  HydrostaticError e;
+  const double rho_g_H = 1000.0 * 9.81 * H;
+  const int up = f.dim - 1;
+  for (std::size_t i = 0; i < f.count; ++i) {
+    if (f.kind[i] != 0) continue;
+    const double y = f.position[i * f.dim + up];
+    double s2 = 0.0;
+    for (int a = 0; a < f.dim; ++a) s2 += std::pow(f.velocity[i * f.dim + a], 2);
+    e.max_speed = std::max(e.max_speed, std::sqrt(s2));
+    // Interior: more than a kernel support (3 d0) below the free surface.
+    if (y > H - 3.0 * d0) continue;
+    e.max_interior = std::max(e.max_interior, std::abs(f.pressure[i] - 1000.0 * 9.81 * (H - y)) / rho_g_H);
+  }
+  return e;
+}
+
+TEST(Hydrostatic, Pressure2dAfterOneSecondWithinTwoPercent) {
+  // d0 = H/40. P = 0 is imposed on the top particle layer, which sits d0/2 below the nominal
+  // surface: a first-order offset of d0/(2H) = 1.25 % of rho g H. 2 % leaves 0.75 % for the
+  // particle noise; the issue asks for 2 %.
+  const double H = 0.1, d0 = H / 40;
+  const auto out = testing::run_scene("hydrostatic_2d.lua", "hydrostatic_2d_fine",
+                                      {{"d0", std::to_string(d0)}, {"end_time", "1.0"}});
+  ASSERT_EQ(out.exit_code, 0);
+  io::RunFileReader run(out.h5_path);
+  const auto frame = run.read_frame(run.frame_count() - 1);
+  EXPECT_NEAR(frame.time, 1.0, 1e-9);
+  const auto e = measure(frame, H, d0);
+  std::printf("hydrostatic 2D, d0 = H/40, t = 1 s: max interior error %.4f rho g H, max speed %.2e m/s, "
+              "wall crossings %ld\n", e.max_interior, e.max_speed, out.summary.wall_crossings);
+  EXPECT_LT(e.max_interior, 0.02);
+  EXPECT_LT(e.max_speed, 0.01 * std::sqrt(9.81 * H));  // at rest to 1 % of the wave speed
+  EXPECT_EQ(out.summary.wall_crossings, 0);
+}
+
+TEST(Hydrostatic, Pressure2dCoarse) {
+  // d0 = H/20: the surface offset alone is 2.5 %; 3.5 % bounds it with the same noise margin.
+  const double H = 0.1, d0 = H / 20;
+  const auto out = testing::run_scene("hydrostatic_2d.lua", "hydrostatic_2d_coarse", {});
+  ASSERT_EQ(out.exit_code, 0);
+  io::RunFileReader run(out.h5_path);
+  const auto e = measure(run.read_frame(run.frame_count() - 1), H, d0);
+  std::printf("hydrostatic 2D, d0 = H/20, t = 1 s: max interior error %.4f rho g H, max speed %.2e m/s\n",
+              e.max_interior, e.max_speed);
+  EXPECT_LT(e.max_interior, 0.035);
+  EXPECT_EQ(out.summary.wall_crossings, 0);
+  // The stats series: one row per step, cumulative wall time non-decreasing.
+  const auto steps = run.read_doubles("/stats/time");
+  EXPECT_EQ(steps.size(), static_cast<std::size_t>(out.summary.steps));
+}
+
+TEST(Hydrostatic, Pressure3dShortTime) {
+  // 3D, d0 = H/10 for CI time. Known limitation (docs/method.md): in 3D still water a
+  // near-wall disturbance grows after about 0.15 s, so this checks t = 0.1 s only, where the
+  // first-order surface offset is d0/(2H) = 5 %; 6 % bounds it.
+  const double H = 0.1, d0 = 0.01;
+  const auto out = testing::run_scene("hydrostatic_3d.lua", "hydrostatic_3d",
+                                      {{"end_time", "0.1"}, {"output_interval", "0.05"}});
+  ASSERT_EQ(out.exit_code, 0);
+  io::RunFileReader run(out.h5_path);
+  const auto e = measure(run.read_frame(run.frame_count() - 1), H, d0);
+  std::printf("hydrostatic 3D, d0 = H/10, t = 0.1 s: max interior error %.4f rho g H, max speed %.2e m/s\n",
+              e.max_interior, e.max_speed);
+  EXPECT_LT(e.max_interior, 0.06);
+  EXPECT_EQ(out.summary.wall_crossings, 0);
+}
+
+}  // namespace
+}  // namespace washout
