@@ -1,6 +1,6 @@
 -- A box of density 500 kg/m^3 released in still water (3D). Archimedes: it settles at the draft
--- D = (rho_b / rho_w) H, half its height. tests/scene/test_floating_box.cpp (and the long test
--- at the finer resolution) compare the settled draft, averaged over a window, with D.
+-- D = (rho_b / rho_w) H, half its height. tests/scene/long_floating_box.cpp compares the settled
+-- draft, averaged over the last second, with D at d0 = 0.02 and 0.01 m.
 -- The box is twice as wide as high in both horizontal directions (a square cross-section of
 -- half the water's density would roll onto an edge: GM = B^2/(12 D) + D/2 - H/2 < 0 for B = H).
 local tank = require("tank")

@@ -1,9 +1,11 @@
 -- A heavy box sinks in still water, lands on the floor and comes to rest on it without passing
 -- through (2D). Contact is the DEM spring-dashpot of METHOD.md ("Contact") between the box and
--- the tank, sub-stepped inside each fluid step (/stats/substeps). At rest the floor carries the
--- box's weight less its buoyancy, (rho_b - rho_w) g V, and the box's bottom sits on the floor
--- less the static overlap of the contact springs (well below d0 / 100).
--- tests/scene/test_body_sinking.cpp checks this at two resolutions.
+-- the tank, sub-stepped inside each fluid step (/stats/substeps). At rest the contact and fluid
+-- loads carry the weight, F_c + F_f = M g, and the box's bottom sits on the floor less the
+-- static overlap of the contact springs (about 3e-8 m). With no water left under the box the
+-- fluid presses it down (F_f < 0): there is no buoyancy without pressure under the bottom.
+-- tests/scene/long_body_sinking.cpp checks this at two resolutions; --set drop=0 starts the box
+-- resting on the floor.
 local tank = require("tank")
 
 local P = washout.parameters {
