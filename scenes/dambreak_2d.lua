@@ -23,3 +23,5 @@ washout.wall { tank.open_box(P, { min = { 0, 0 }, max = { P.tank_length, P.tank_
                name = "tank" }
 washout.probe { name = "front", quantity = "front", axis = "x" }
 washout.probe { name = "residual_height", quantity = "water_height", at = { 0.5 * P.d0, 0 } }
+-- Speeds reach about sqrt(2 g 2a) = 2.4 m/s: a fixed colour range keeps frames comparable.
+washout.frames { width = 960, height = 540, color = "speed", every = 4, range = { 0, 2.5 } }

@@ -50,7 +50,7 @@ Load run_submerged(const std::string& shape, double d0) {
 // (test_body_builder.cpp), and at d0 = 0.01 the disc is only 5 particles in radius: its wall
 // treatment (mirror points across a surface curved on the kernel's scale, 2h = R/2) is first
 // order in h/R. The error must also shrink from the coarse to the fine resolution.
-// Measured: box -0.58 % and -0.15 %, disc -1.52 % and +0.01 %.
+// Measured: box -0.59 % and -0.15 %, disc -1.49 % and -0.03 %.
 // The horizontal force and the torque vanish by symmetry: bound 0.1 % of rho0 g V (times the
 // size for the torque), far above rounding and far below any asymmetric pressure error.
 TEST(BodySubmerged, PressureForceEqualsBuoyancyAtTwoResolutions) {
