@@ -35,8 +35,7 @@ cmake --build build -j "$jobs" >> build.log 2>&1 || { tail -50 build.log; exit 1
 
 case "$mode" in
   run)
-    scene="${WASHOUT_DEFAULT_SCENE:-scenes/girder_washout_2d.lua}"
-    [ -f "$scene" ] || scene=scenes/dambreak_2d.lua
+    scene="${WASHOUT_DEFAULT_SCENE:-scenes/dambreak_2d.lua}"
     name="$(basename "$scene" .lua)"
     out="runs/$name"
     echo "== running $scene into $out/"
