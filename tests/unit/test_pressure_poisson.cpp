@@ -13,23 +13,37 @@
 namespace washout {
 namespace {
 
-TEST(PressurePoisson, ManufacturedSolutionBothSolvers) {
-  for (int n : {20, 40}) {
-    const double d0 = 1.0 / n;
-    SphContext ctx(2, d0, 1.2, 1000.0, PeriodicBox{});
-    Particles p;
+// Fluid particles at rest on a lattice (optionally offset per particle), neighbour list built,
+// densities at rho0: the inputs of assemble_pressure_poisson.
+struct LatticeSystem {
+  SphContext ctx;
+  Particles p;
+  NeighborList list;
+  FluidWork work;
+  LatticeSystem(int n, double d0, double (*offset_x)(int, int))
+      : ctx(2, d0, 1.2, 1000.0, PeriodicBox{}) {
     p.dim = 2;
     for (int j = 0; j < n; ++j)
       for (int i = 0; i < n; ++i)
-        p.add(ParticleKind::Fluid, Vec3((i + 0.5) * d0, (j + 0.5) * d0, 0), Vec3::Zero(), -1);
+        p.add(ParticleKind::Fluid, Vec3((i + 0.5) * d0 + offset_x(i, j), (j + 0.5) * d0, 0),
+              Vec3::Zero(), -1);
     NeighborGrid grid;
     grid.build(p, 2 * ctx.h, ctx.periodic);
-    NeighborList list;
     grid.build_list(p, p.size(), 2 * ctx.h, list);
-    FluidWork work;
     for (int a = 0; a < 3; ++a) work.u_star[a].assign(p.size(), 0.0);
     for (std::size_t i = 0; i < p.size(); ++i) p.density[i] = ctx.rho0;
     work.free_surface.assign(p.size(), 0);
+  }
+};
+
+double no_offset(int, int) { return 0.0; }
+double irregular_offset(int i, int j) { return 0.003 * ((i * 7 + j * 3) % 5); }
+
+TEST(PressurePoisson, ManufacturedSolutionBothSolvers) {
+  for (int n : {20, 40}) {
+    const double d0 = 1.0 / n;
+    LatticeSystem sys(n, d0, no_offset);
+    auto& [ctx, p, list, work] = sys;
     const double x0 = 0.5 * d0, L = 1.0 - d0;  // ring to ring
     for (std::size_t i = 0; i < p.size(); ++i) {
       const double x = p.position[0][i], y = p.position[1][i];
@@ -65,22 +79,8 @@ TEST(PressurePoisson, ManufacturedSolutionBothSolvers) {
 
 // The assembled matrix is symmetric with a positive diagonal: what CHOLMOD and CG require.
 TEST(PressurePoisson, MatrixIsSymmetric) {
-  const double d0 = 0.05;
-  SphContext ctx(2, d0, 1.2, 1000.0, PeriodicBox{});
-  Particles p;
-  p.dim = 2;
-  for (int j = 0; j < 12; ++j)
-    for (int i = 0; i < 12; ++i)
-      p.add(ParticleKind::Fluid, Vec3((i + 0.5) * d0 + 0.003 * ((i * 7 + j * 3) % 5), (j + 0.5) * d0, 0),
-            Vec3::Zero(), -1);
-  NeighborGrid grid;
-  grid.build(p, 2 * ctx.h, ctx.periodic);
-  NeighborList list;
-  grid.build_list(p, p.size(), 2 * ctx.h, list);
-  FluidWork work;
-  for (int a = 0; a < 3; ++a) work.u_star[a].assign(p.size(), 0.0);
-  for (std::size_t i = 0; i < p.size(); ++i) p.density[i] = ctx.rho0;
-  work.free_surface.assign(p.size(), 0);
+  LatticeSystem sys(12, 0.05, irregular_offset);
+  auto& [ctx, p, list, work] = sys;
   for (std::size_t i = 0; i < 12; ++i) work.free_surface[i] = 1;  // bottom row: Dirichlet
   assemble_pressure_poisson(ctx, list, p, Vec3::Zero(), 0.0, 1e-3, work);
   const CsrMatrix& A = work.matrix;
