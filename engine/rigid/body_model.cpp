@@ -79,20 +79,7 @@ BodyModel make_body_model(const BodyParticles& p) {
   }
   model.bounding_radius = std::sqrt(max_r2) + model.contact_radius;
 
-  model.inertia = particle_inertia(p, model.offset);
-  if (p.dim == 3) {
-    model.inertia_inverse = model.inertia.inverse();
-    Eigen::SelfAdjointEigenSolver<Eigen::Matrix3d> eigen(model.inertia);
-    model.principal_moments = eigen.eigenvalues();
-    model.principal_axes = eigen.eigenvectors();
-    if (model.principal_axes.determinant() < 0.0) model.principal_axes.col(2) *= -1.0;
-  } else {
-    const double izz = model.inertia(2, 2);
-    model.inertia_inverse = Eigen::Matrix3d::Zero();
-    model.inertia_inverse(2, 2) = 1.0 / izz;
-    model.principal_moments = Vec3(model.inertia(0, 0), model.inertia(1, 1), izz);
-    model.principal_axes = Eigen::Matrix3d::Identity();
-  }
+  set_inertia(model, particle_inertia(p, model.offset));
 
   for (std::size_t i = 0; i < n; ++i) {
     const bool on_surface = p.surface.empty() || p.surface[i] != 0;
@@ -110,6 +97,26 @@ BodyModel make_body_model(const BodyParticles& p) {
     model.surface_area.push_back(p.area[i]);
   }
   return model;
+}
+
+void set_inertia(BodyModel& model, const Eigen::Matrix3d& inertia) {
+  model.inertia = inertia;
+  if (model.dim == 3) {
+    if (!(std::abs(inertia.determinant()) > 0.0))
+      throw std::invalid_argument("rigid body: singular inertia tensor");
+    model.inertia_inverse = inertia.inverse();
+    Eigen::SelfAdjointEigenSolver<Eigen::Matrix3d> eigen(inertia);
+    model.principal_moments = eigen.eigenvalues();
+    model.principal_axes = eigen.eigenvectors();
+    if (model.principal_axes.determinant() < 0.0) model.principal_axes.col(2) *= -1.0;
+  } else {
+    const double izz = inertia(2, 2);
+    if (!(izz > 0.0)) throw std::invalid_argument("rigid body: I_zz must be > 0");
+    model.inertia_inverse = Eigen::Matrix3d::Zero();
+    model.inertia_inverse(2, 2) = 1.0 / izz;
+    model.principal_moments = Vec3(inertia(0, 0), inertia(1, 1), izz);
+    model.principal_axes = Eigen::Matrix3d::Identity();
+  }
 }
 
 }  // namespace washout::rigid

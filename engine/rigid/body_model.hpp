@@ -84,4 +84,9 @@ struct BodyModel {
 // particle lists. Throws std::invalid_argument on inconsistent input.
 BodyModel make_body_model(const BodyParticles& particles);
 
+// Sets model.inertia (body frame, about the centre of mass) and what follows from it: the
+// inverse and, in 3D, the principal moments and axes (a proper rotation). Throws
+// std::invalid_argument for a singular tensor (3D) or I_zz <= 0 (2D).
+void set_inertia(BodyModel& model, const Eigen::Matrix3d& inertia);
+
 }  // namespace washout::rigid

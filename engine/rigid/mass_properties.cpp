@@ -29,23 +29,7 @@ void set_mass_properties(BodyModel& model, const MassProperties& properties) {
     max_r2 = std::max(max_r2, model.offset[i].squaredNorm());
   model.bounding_radius = std::sqrt(max_r2) + model.contact_radius;
 
-  model.inertia = properties.inertia;
-  if (model.dim == 3) {
-    if (!(std::abs(model.inertia.determinant()) > 0.0))
-      throw std::invalid_argument("rigid body: singular inertia tensor");
-    model.inertia_inverse = model.inertia.inverse();
-    Eigen::SelfAdjointEigenSolver<Eigen::Matrix3d> eigen(model.inertia);
-    model.principal_moments = eigen.eigenvalues();
-    model.principal_axes = eigen.eigenvectors();
-    if (model.principal_axes.determinant() < 0.0) model.principal_axes.col(2) *= -1.0;
-  } else {
-    const double izz = model.inertia(2, 2);
-    if (!(izz > 0.0)) throw std::invalid_argument("rigid body: I_zz must be > 0");
-    model.inertia_inverse = Eigen::Matrix3d::Zero();
-    model.inertia_inverse(2, 2) = 1.0 / izz;
-    model.principal_moments = Vec3(model.inertia(0, 0), model.inertia(1, 1), izz);
-    model.principal_axes = Eigen::Matrix3d::Identity();
-  }
+  set_inertia(model, properties.inertia);
 }
 
 }  // namespace washout::rigid
