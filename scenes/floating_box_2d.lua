@@ -21,7 +21,6 @@ local P = washout.parameters {
     water_depth = 0.2,    -- [m]
     tank_width = 0.6,     -- [m]
     motion = "dynamic",   -- or "fixed" (held at start_draft)
-    added_mass = 1,       -- the body's added-mass stabilisation (docs/bodies.md)
   },
 }
 
@@ -32,8 +31,7 @@ local bottom = Hw - P.start_draft
 washout.fluid { washout.box { min = { 0, 0 }, max = { W, Hw } } }
 washout.wall { tank.open_box(P, { min = { 0, 0 }, max = { W, Hw + 2 * H } }), name = "tank" }
 washout.body { washout.box { min = { x0, bottom }, max = { x0 + B, bottom + H } },
-               name = "box", density = P.box_density, motion = P.motion,
-               added_mass = P.added_mass }
+               name = "box", density = P.box_density, motion = P.motion }
 -- The water level beside the box, halfway between it and each side wall.
 washout.probe { name = "level_left", quantity = "water_height", at = { 0.5 * x0, 0 } }
 washout.probe { name = "level_right", quantity = "water_height", at = { W - 0.5 * x0, 0 } }

@@ -18,7 +18,6 @@ local P = washout.parameters {
     start_draft = 0.04,   -- initial draft [m]; lattice-aligned for d0 = 0.02 and 0.01
     water_depth = 0.2,    -- [m]
     tank_width = 0.4,     -- along x and y [m]
-    added_mass = 1,       -- the body's added-mass stabilisation (docs/bodies.md)
   },
 }
 
@@ -29,7 +28,7 @@ local bottom = Hw - P.start_draft
 washout.fluid { washout.box { min = { 0, 0, 0 }, max = { W, W, Hw } } }
 washout.wall { tank.open_box(P, { min = { 0, 0, 0 }, max = { W, W, Hw + 2 * H } }), name = "tank" }
 washout.body { washout.box { min = { x0, x0, bottom }, max = { x0 + B, x0 + B, bottom + H } },
-               name = "box", density = P.box_density, added_mass = P.added_mass,
+               name = "box", density = P.box_density,
                angle_axis = "y" }
 -- The water level beside the box, in a corner of the tank away from it.
 washout.probe { name = "level", quantity = "water_height", at = { 0.5 * x0, 0.5 * x0, 0 } }

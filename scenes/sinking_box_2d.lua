@@ -21,7 +21,6 @@ local P = washout.parameters {
     drop = 0.06,          -- initial gap between the box and the floor [m]
     water_depth = 0.2,    -- [m]
     tank_width = 0.3,     -- [m]
-    added_mass = 1,       -- the added-mass stabilisation (docs/bodies.md)
   },
 }
 
@@ -34,4 +33,4 @@ washout.fluid { washout.box { min = { 0, 0 }, max = { W, Hw } } }
 washout.wall { tank.open_box(P, { min = { 0, 0 }, max = { W, 1.5 * Hw } }), name = "tank",
                material = concrete }
 washout.body { washout.box { min = { x0, P.drop }, max = { x0 + B, P.drop + H } },
-               name = "box", density = P.box_density, material = pla, added_mass = P.added_mass }
+               name = "box", density = P.box_density, material = pla }

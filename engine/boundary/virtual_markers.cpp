@@ -1,5 +1,8 @@
 #include "engine/boundary/virtual_markers.hpp"
 
+#include <algorithm>
+#include <cmath>
+
 #include "engine/fluid/fluid_interpolation.hpp"
 
 namespace washout {
@@ -39,9 +42,17 @@ void update_marker_velocities(const SphContext& ctx, const NeighborGrid& grid, c
       un += rel[a] * normal[a];
     }
     const double tangential_factor = 2.0 * work.wall_slip[w - p.fluid_count] - 1.0;
+    // Fluid coming at the wall (un < 0) meets a marker coming back at it, so that the
+    // wall's share of the divergence stops it. Fluid leaving the wall faster than the
+    // separation speed U meets a marker leaving with it: a wall pushes but does not pull, and
+    // the fluid may separate (below U, the blend keeps still water symmetric about the wall).
+    const double leaving =
+        un > 0.0 && work.separation_speed > 0.0 ? std::min(1.0, un / work.separation_speed) : 0.0;
+    const double marker_un = -un + 2.0 * leaving * un;
     for (int a = 0; a < 3; ++a) {
-      const double normal_part = un * normal[a], tangential_part = rel[a] - normal_part;
-      work.marker_velocity[a][w] = u_wall[a] - normal_part + tangential_factor * tangential_part;
+      const double tangential_part = rel[a] - un * normal[a];
+      work.marker_velocity[a][w] =
+          u_wall[a] + marker_un * normal[a] + tangential_factor * tangential_part;
     }
   }
 }

@@ -14,6 +14,11 @@ struct FluidWork {
   std::vector<std::uint8_t> free_surface;              // 1: P = 0 (fluid)
   std::vector<double> eddy_viscosity;                  // nu_t (fluid; empty without turbulence)
   std::vector<double> wall_slip;                       // slip ratio per boundary particle
+  double separation_speed = 0.0;  // fluid leaving a wall faster than this separates from it
+  // Wall condition of the PPE: false, Neumann jump from the relative velocity; true, the wall's
+  // velocity enters the divergence and the jump carries the wall's acceleration.
+  bool dynamic_wall = false;
+  std::array<std::vector<double>, 3> wall_acceleration;  // (all particles; boundary entries)
   std::vector<std::int32_t> unknown;                   // PPE row of a fluid particle, or -1
   CsrMatrix matrix;
   std::vector<double> rhs, solution;

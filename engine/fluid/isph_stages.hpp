@@ -50,6 +50,20 @@ void gather_pressure_guess(const Particles& p, FluidWork& work);
 inline double wall_pressure_jump(const SphContext& ctx, const Particles& p, const FluidWork& work,
                                  const Vec3& gravity, std::size_t i, std::size_t w,
                                  const double d_iw[3], double dt) {
+  if (work.dynamic_wall) {
+    // dP/dn = rho0 (g - a_w).n: the fluid keeps the wall's normal acceleration; along the wall
+    // the hydrostatic variation. A wall sliding along itself (a gate lifted) leaves P alone.
+    double gr = 0.0, an = 0.0, rn = 0.0;
+    for (int a = 0; a < ctx.dim; ++a) {
+      const double n = p.normal[a][w], r = -d_iw[a];
+      gr += gravity[a] * r;
+      an += work.wall_acceleration[a][w] * n;
+      rn += r * n;
+    }
+    // Only where i lies in front of w's face (r . n < 0): beside a convex corner the fluid sees
+    // the other face's particles, whose normal motion is not its own.
+    return ctx.rho0 * (rn < 0.0 ? gr - an * rn : gr);
+  }
   double un = 0.0, rn = 0.0, gr = 0.0, gn = 0.0;
   for (int a = 0; a < ctx.dim; ++a) {
     const double n = p.normal[a][w], r = -d_iw[a];  // r = x_w - x_i

@@ -35,6 +35,16 @@ PpeStatistics assemble_pressure_poisson(const SphContext& ctx, const NeighborLis
                                         const Particles& p, const Vec3& gravity, double alpha,
                                         double dt, FluidWork& work) {
   const std::size_t n = p.fluid_count;
+  // A particle with no fluid neighbour (a drop, or one left in the closing gap between a body
+  // and the floor) has no pressure equation of its own: it takes P = 0 like the free surface.
+#pragma omp parallel for schedule(static)
+  for (std::size_t i = 0; i < n; ++i) {
+    if (work.free_surface[i]) continue;
+    bool alone = true;
+    for (std::uint64_t k = list.offset[i]; k < list.offset[i + 1] && alone; ++k)
+      alone = list.index[k] >= n;
+    if (alone) work.free_surface[i] = 1;
+  }
   work.unknown.assign(n, -1);
   std::size_t rows = 0;
   for (std::size_t i = 0; i < n; ++i)
@@ -89,6 +99,21 @@ PpeStatistics assemble_pressure_poisson(const SphContext& ctx, const NeighborLis
           divergence += f * d[a] * (work.u_star[a][j] - work.u_star[a][i]);
       } else {
         wall_term += c * wall_pressure_jump(ctx, p, work, gravity, i, j, d, dt);
+        if (work.dynamic_wall) {
+          // The wall's share of <div u*>: the wall's velocity plus the normal part of the
+          // virtual marker's velocity relative to it (the fluid's, mirrored at the start of the
+          // step), with the same body-force increment dt g as the fluid (the wall jump above
+          // carries g - a_w). The tangential part is left out: beyond the tip of a flow the
+          // markers are dry, and their tangential velocity would read as a divergence.
+          double marker_un = 0.0;
+          for (int a = 0; a < ctx.dim; ++a)
+            marker_un += (work.marker_velocity[a][j] - p.velocity[a][j]) * p.normal[a][j];
+          const double f = g_scale * ctx.kernel.derivative_over_r(r);
+          for (int a = 0; a < ctx.dim; ++a)
+            divergence += f * d[a] *
+                          (p.velocity[a][j] + marker_un * p.normal[a][j] + dt * gravity[a] -
+                           work.u_star[a][i]);
+        }
       }
     }
     A.column[A.row_start[row]] = row;

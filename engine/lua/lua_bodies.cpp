@@ -202,7 +202,7 @@ int l_body(lua_State* L) {
   luaL_checktype(L, 1, LUA_TTABLE);
   check_keys(L, 1, "washout.body",
              {"shape", "name", "density", "mass", "material", "motion", "velocity",
-              "angular_velocity", "angle_axis", "slip", "added_mass"});
+              "angular_velocity", "angle_axis", "slip"});
   Model& model = resolved_model(L);
   const int dim = model.params.dim;
   BodySpec body;
@@ -229,8 +229,6 @@ int l_body(lua_State* L) {
                 "' (define it with washout.material before)");
   body.slip = read_number(L, 1, "slip", what.c_str(), false, model.params.wall_slip);
   if (!(body.slip >= 0 && body.slip <= 1)) fail(L, " " + what + ": slip must lie in [0, 1]");
-  body.added_mass = read_number(L, 1, "added_mass", what.c_str(), false, body.added_mass);
-  if (!(body.added_mass >= 0)) fail(L, " " + what + ": added_mass must be >= 0");
 
   lua_getfield(L, 1, "motion");
   if (lua_isfunction(L, -1)) {

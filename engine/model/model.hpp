@@ -85,9 +85,6 @@ struct BodySpec {
   Vec3 velocity = Vec3::Zero();          // initial, of the centre of mass
   Vec3 angular_velocity = Vec3::Zero();  // initial, world frame (2D: about z)
   Vec3 angle_axis = Vec3::UnitZ();       // unit axis of the reported rotation angle
-  // Added-mass stabilisation of the fluid coupling (docs/bodies.md): m' = added_mass rho0 V
-  // (and rho0 times the shape's inertia per density for rotation); 0: METHOD.md's explicit step.
-  double added_mass = 1.0;
   SourceLocation where;
 };
 

@@ -83,6 +83,11 @@ const std::vector<ParameterInfo>& ParameterSet::engine_table() {
       {"pressure_gradient", "-",
        "corrector gradient: \"symmetric\" (momentum-conserving) or \"difference\"",
        std::string("symmetric")},
+      {"wall_pressure", "-",
+       "wall condition of the PPE: \"neumann\" (dP/dn from the fluid's relative velocity), "
+       "\"dynamic\" (walls in the divergence, dP/dn = rho0 (g - a_wall).n; solves dynamic "
+       "bodies with the pressure) or \"auto\" (dynamic when the scene has dynamic bodies)",
+       std::string("auto")},
       {"shifting", "-",
        "particle shifting coefficient A (delta r = -A h^2 grad C, Lind et al. 2012); 0 = off",
        0.0},
@@ -299,6 +304,7 @@ SimulationParameters SimulationParameters::from(const ParameterSet& set) {
   p.solver_tolerance = positive("solver_tolerance");
   p.solver_max_iterations = integer("solver_max_iterations", positive("solver_max_iterations"));
   p.pressure_gradient = one_of("pressure_gradient", {"symmetric", "difference"});
+  p.wall_pressure = one_of("wall_pressure", {"auto", "neumann", "dynamic"});
   p.shifting = non_negative("shifting");
   p.surface_smoothing = in_unit_interval("surface_smoothing");
   p.output_interval = positive("output_interval");

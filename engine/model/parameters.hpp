@@ -85,6 +85,7 @@ struct SimulationParameters {
   double solver_tolerance = 1e-8;
   int solver_max_iterations = 5000;
   std::string pressure_gradient = "symmetric";
+  std::string wall_pressure = "auto";
   double shifting = 0.0;
   double surface_smoothing = 0.5;
   double output_interval = 0.05;

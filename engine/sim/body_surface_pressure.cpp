@@ -8,7 +8,7 @@ namespace washout {
 
 void body_surface_pressure(const SphContext& ctx, const NeighborGrid& grid, const Particles& p,
                            const Vec3& gravity, std::span<const std::uint32_t> particles,
-                           std::vector<double>& pressure) {
+                           std::vector<double>& pressure, bool linear) {
   const std::size_t count = particles.size();
   pressure.resize(count);
 #pragma omp parallel for schedule(dynamic, 64)
@@ -31,7 +31,7 @@ void body_surface_pressure(const SphContext& ctx, const NeighborGrid& grid, cons
     double value = 0.0;
     if (fraction >= kDryFluidFraction) {
       value = sum * ctx.volume / fraction;
-      if (fraction < kWetFluidFraction) value = std::max(value, 0.0);
+      if (fraction < kWetFluidFraction && !linear) value = std::max(value, 0.0);
     }
     pressure[k] = value;
   }

@@ -21,9 +21,10 @@
 namespace washout {
 
 // pressure[k] = P(s) for boundary particle particles[k]; the grid must hold the fluid at the
-// positions the pressure was solved for.
+// positions the pressure was solved for. linear: no clamp at the free surface, so that the
+// result is linear in the fluid pressure (for a pressure response, gravity zero).
 void body_surface_pressure(const SphContext& ctx, const NeighborGrid& grid, const Particles& p,
                            const Vec3& gravity, std::span<const std::uint32_t> particles,
-                           std::vector<double>& pressure);
+                           std::vector<double>& pressure, bool linear = false);
 
 }  // namespace washout

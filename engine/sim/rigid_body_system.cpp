@@ -89,18 +89,9 @@ RigidBodySystem::RigidBodySystem(const Model& model, std::vector<BuiltBody> bodi
     volumes_.push_back(built.solid.volume);
     angles_.emplace_back(dim_ == 2 ? Vec3::UnitZ() : spec.angle_axis);
     angles_.back().update(built.initial.orientation);
-    AddedMass added;
-    if (built.model.motion == rigid::MotionKind::kDynamic && spec.added_mass > 0.0) {
-      added.mass = spec.added_mass * model.params.rho0 * built.solid.volume;
-      added.inertia = spec.added_mass * model.params.rho0 * built.solid.inertia_per_density;
-    }
-    added_.push_back(added);
-    integrator_models_.push_back(added.mass > 0.0 ? with_added_mass(built.model, added)
-                                                  : built.model);
     models_.push_back(std::move(built.model));
     states_.push_back(built.initial);
   }
-  previous_states_ = states_;
   fluid_loads_.assign(count, {});
   contact_loads_.assign(count, {});
   series_.resize(count);
@@ -152,7 +143,16 @@ void RigidBodySystem::set_prescribed_velocities(double t, Particles& p) const {
 // n_i dS_i the particle's share of the surface (body_builder.hpp).
 void RigidBodySystem::compute_fluid_loads(const SphContext& ctx, const NeighborGrid& grid,
                                           const Particles& p, const Vec3& gravity) {
-  body_surface_pressure(ctx, grid, p, gravity, surface_particles_, surface_pressure_);
+  fluid_loads_ = loads_of_pressure(ctx, grid, p, gravity, false);
+}
+
+const std::vector<rigid::BodyLoad>& RigidBodySystem::loads_of_pressure(const SphContext& ctx,
+                                                                       const NeighborGrid& grid,
+                                                                       const Particles& p,
+                                                                       const Vec3& gravity,
+                                                                       bool linear) {
+  body_surface_pressure(ctx, grid, p, gravity, surface_particles_, surface_pressure_, linear);
+  scratch_loads_.resize(size());
   for (std::size_t b = 0; b < size(); ++b) {
     const std::size_t begin = surface_begin_[b], end = surface_begin_[b + 1];
     const Eigen::Matrix3d R = states_[b].orientation.toRotationMatrix();
@@ -165,28 +165,22 @@ void RigidBodySystem::compute_fluid_loads(const SphContext& ctx, const NeighborG
       load_point_.set(k - begin, p.x(i) + p.wall_distance[i] * n_wall);
       load_normal_.set(k - begin, R * surface_normal[k - begin]);
     }
-    fluid_loads_[b] = rigid::hydrodynamic_load(
+    rigid::BodyLoad& load = scratch_loads_[b];
+    load = rigid::hydrodynamic_load(
         std::span<const double>(surface_pressure_).subspan(begin, end - begin), load_point_,
         load_normal_, models_[b].surface_area, states_[b].position);
     if (dim_ == 2) {
-      fluid_loads_[b].force.z() = 0.0;
-      fluid_loads_[b].torque.x() = fluid_loads_[b].torque.y() = 0.0;
+      load.force.z() = 0.0;
+      load.torque.x() = load.torque.y() = 0.0;
     }
   }
+  return scratch_loads_;
 }
 
 long RigidBodySystem::advance(double t, double dt, const Vec3& gravity, Particles& p) {
-  integrator_loads_.resize(size());
-  for (std::size_t b = 0; b < size(); ++b)
-    integrator_loads_[b] = added_[b].mass > 0.0
-                               ? added_mass_load(fluid_loads_[b], added_[b], states_[b],
-                                                 previous_states_[b], previous_dt_, gravity)
-                               : fluid_loads_[b];
-  previous_states_ = states_;
-  previous_dt_ = dt;
   try {
-    last_report_ = contact::advance_bodies(integrator_models_, states_, integrator_loads_, contact_,
-                                           workspace_, gravity, t, dt);
+    last_report_ = contact::advance_bodies(models_, states_, fluid_loads_, contact_, workspace_,
+                                           gravity, t, dt);
   } catch (const SceneError&) {
     throw;  // a prescribed motion that failed: the scene's fault
   } catch (const std::runtime_error& e) {

@@ -5,9 +5,10 @@
 //      bodies: at the new time, like moving walls), so that the wall treatment (virtual markers,
 //      the Neumann condition of the PPE) sees them as walls that move;
 //   2. after the solve, the surface pressure gives F_f and M_f (body_surface_pressure.hpp);
+//      dynamic bodies' loads come from the pressure solved together with their velocities
+//      (implicit_body_coupling.hpp), which keeps light bodies stable;
 //   3. after the fluid has moved, advance_bodies integrates every body over the step with the
-//      fluid load held, sub-stepped for contact with the fixed walls and between bodies, with
-//      the added-mass stabilisation of added_mass_coupling.hpp;
+//      fluid load held, sub-stepped for contact with the fixed walls and between bodies;
 //   4. the body particles follow: x = X + R r0, u = T + w x R r0, n = R n0.
 #include <cstdint>
 #include <string>
@@ -18,7 +19,6 @@
 #include "engine/fluid/sph_context.hpp"
 #include "engine/model/model.hpp"
 #include "engine/rigid/rotation_angle.hpp"
-#include "engine/sim/added_mass_coupling.hpp"
 #include "engine/sim/body_builder.hpp"
 
 namespace washout {
@@ -53,6 +53,14 @@ class RigidBodySystem {
   // F_f, M_f of every body from the pressure just solved (fluid not yet moved).
   void compute_fluid_loads(const SphContext& ctx, const NeighborGrid& grid, const Particles& p,
                            const Vec3& gravity);
+  // The loads p.pressure would give, without storing them; linear: no free-surface clamp (for
+  // a pressure response field, with gravity zero).
+  const std::vector<rigid::BodyLoad>& loads_of_pressure(const SphContext& ctx,
+                                                        const NeighborGrid& grid,
+                                                        const Particles& p, const Vec3& gravity,
+                                                        bool linear);
+  void set_fluid_load(std::size_t b, const rigid::BodyLoad& load) { fluid_loads_[b] = load; }
+  bool dynamic(std::size_t b) const { return models_[b].motion == rigid::MotionKind::kDynamic; }
   // Every body from t to t + dt with contact sub-steps, then its particles. Returns the number
   // of sub-steps; throws UnstableError when a body's state blows up or sub-stepping fails.
   long advance(double t, double dt, const Vec3& gravity, Particles& p);
@@ -69,14 +77,7 @@ class RigidBodySystem {
   int dim_ = 2;
   std::vector<rigid::BodyModel> models_;
   std::vector<rigid::BodyState> states_;
-  // Added-mass stabilisation: what the integrator sees (M + m', I + J'), the states one step
-  // back and that step's length.
-  std::vector<AddedMass> added_;
-  std::vector<rigid::BodyModel> integrator_models_;
-  std::vector<rigid::BodyState> previous_states_;
-  std::vector<rigid::BodyLoad> integrator_loads_;
-  double previous_dt_ = 0.0;
-  std::vector<rigid::BodyLoad> fluid_loads_, contact_loads_;
+  std::vector<rigid::BodyLoad> fluid_loads_, contact_loads_, scratch_loads_;
   std::vector<rigid::RotationAngleTracker> angles_;
   std::vector<Shape> shapes_;  // in the reference pose (q = identity, X = centre of mass)
   std::vector<double> volumes_;

@@ -9,6 +9,7 @@
 #include <sstream>
 
 #include "engine/boundary/virtual_markers.hpp"
+#include "engine/boundary/wall_acceleration.hpp"
 #include "engine/fluid/fluid_interpolation.hpp"
 #include "engine/fluid/isph_stages.hpp"
 #include "engine/io/run_file_writer.hpp"
@@ -59,6 +60,8 @@ Simulation::Simulation(Model model)
   particles_ = std::move(built.particles);
   moving_walls_ = std::move(built.moving_walls);
   work_.wall_slip = std::move(built.wall_slip);
+  // The speed a particle gains falling one spacing: slower departures from a wall are noise.
+  work_.separation_speed = std::sqrt(2.0 * model_.params.gravity.norm() * ctx_.d0);
   if (!built.bodies.empty()) {
     bodies_ = std::make_unique<RigidBodySystem>(model_, std::move(built.bodies),
                                                 std::move(built.body_first));
@@ -170,6 +173,21 @@ StepReport Simulation::step_until(double until) {
     }
   }
   if (bodies_) bodies_->set_prescribed_velocities(t_new, particles_);
+  if (step_ == 0) {
+    // "auto": the dynamic wall condition where the scene has dynamic bodies (their velocities
+    // are then solved with the pressure); the Neumann form otherwise, which keeps still water
+    // and dam-break fronts slightly closer to the references (docs/method.md).
+    bool dynamic_bodies = false;
+    for (std::size_t b = 0; bodies_ && b < bodies_->size(); ++b)
+      dynamic_bodies = dynamic_bodies || bodies_->dynamic(b);
+    work_.dynamic_wall = prm.wall_pressure == "dynamic" ||
+                         (prm.wall_pressure == "auto" && dynamic_bodies);
+  }
+  if (work_.dynamic_wall) {
+    std::vector<std::uint8_t> solved(bodies_ ? bodies_->size() : 0, 0);
+    for (std::size_t b = 0; b < solved.size(); ++b) solved[b] = bodies_->dynamic(b);
+    update_wall_accelerations(particles_, solved, dt, previous_wall_velocity_, work_);
+  }
   PpeStatistics ppe;
   {
     auto s = timer_.measure("ppe_assembly");
@@ -204,7 +222,13 @@ StepReport Simulation::step_until(double until) {
   if (bodies_) {
     // P^{n+1} belongs to the positions x^n: take the body loads before the fluid moves.
     auto s = timer_.measure("body_loads");
-    bodies_->compute_fluid_loads(ctx_, grid_, particles_, prm.gravity);
+    if (work_.dynamic_wall) {
+      const CouplingReport coupling = coupling_.couple(ctx_, neighbors_, grid_, particles_, work_,
+                                                       *solver_, *bodies_, prm.gravity, dt);
+      total_ppe_iterations_ += coupling.iterations;
+    } else {
+      bodies_->compute_fluid_loads(ctx_, grid_, particles_, prm.gravity);
+    }
   }
   {
     auto s = timer_.measure("corrector");

@@ -1,4 +1,5 @@
 #pragma once
+#include <array>
 // A run: the Model turned into particles and stepped by the stabilized ISPH projection method.
 // The step is composed from what the scene uses (no turbulence stage without turbulence, no
 // moving-wall update without moving walls); each stage's time is measured.
@@ -12,6 +13,7 @@
 #include "engine/fluid/fluid_work.hpp"
 #include "engine/fluid/sph_context.hpp"
 #include "engine/model/model.hpp"
+#include "engine/sim/implicit_body_coupling.hpp"
 #include "engine/sim/stage_timer.hpp"
 #include "engine/solvers/linear_solver.hpp"
 
@@ -128,6 +130,8 @@ class Simulation {
   NeighborGrid grid_;
   NeighborList neighbors_;
   FluidWork work_;
+  ImplicitBodyCoupling coupling_;
+  std::array<std::vector<double>, 3> previous_wall_velocity_;  // for the wall acceleration
   std::unique_ptr<LinearSolver> solver_;
   std::vector<MovingWall> moving_walls_;
   std::unique_ptr<RigidBodySystem> bodies_;

@@ -1,5 +1,6 @@
 // Direct sparse Cholesky factorisation with SuiteSparse CHOLMOD (supernodal, AMD ordering).
-// The sparsity changes every step as neighbours change, so each solve analyses and factorises.
+// The sparsity changes every step as neighbours change, so each solve analyses and factorises;
+// the factor is kept for further right-hand sides (solve_again).
 #include <cholmod.h>
 
 #include <cstring>
@@ -12,13 +13,17 @@ namespace {
 class CholmodSolver final : public LinearSolver {
  public:
   CholmodSolver() { cholmod_l_start(&common_); common_.print = 0; }
-  ~CholmodSolver() override { cholmod_l_finish(&common_); }
+  ~CholmodSolver() override {
+    release();
+    cholmod_l_finish(&common_);
+  }
   CholmodSolver(const CholmodSolver&) = delete;
   CholmodSolver& operator=(const CholmodSolver&) = delete;
   std::string name() const override { return "cholmod"; }
 
   SolveReport solve(const CsrMatrix& A, const std::vector<double>& b,
                     std::vector<double>& x) override {
+    release();
     const std::size_t n = A.rows;
     x.assign(n, 0.0);
     if (n == 0) return {};
@@ -34,29 +39,45 @@ class CholmodSolver final : public LinearSolver {
       idx[k] = A.column[k];
       val[k] = A.value[k];
     }
-    cholmod_factor* L = cholmod_l_analyze(M, &common_);
-    cholmod_l_factorize(M, L, &common_);
-    if (common_.status != CHOLMOD_OK || L->minor < n) {
-      cholmod_l_free_factor(&L, &common_);
-      cholmod_l_free_sparse(&M, &common_);
+    factor_ = cholmod_l_analyze(M, &common_);
+    cholmod_l_factorize(M, factor_, &common_);
+    const bool positive = common_.status == CHOLMOD_OK && factor_->minor >= n;
+    cholmod_l_free_sparse(&M, &common_);
+    if (!positive) {
+      release();
       throw SolverError("CHOLMOD: the pressure matrix is not positive definite");
     }
+    return substitute(A, b, x);
+  }
+
+  SolveReport solve_again(const CsrMatrix& A, const std::vector<double>& b,
+                          std::vector<double>& x) override {
+    if (!factor_ || factor_->n != A.rows) return solve(A, b, x);
+    return substitute(A, b, x);
+  }
+
+ private:
+  SolveReport substitute(const CsrMatrix& A, const std::vector<double>& b, std::vector<double>& x) {
+    const std::size_t n = A.rows;
+    x.assign(n, 0.0);
     cholmod_dense* B = cholmod_l_allocate_dense(n, 1, n, CHOLMOD_REAL, &common_);
     std::memcpy(B->x, b.data(), n * sizeof(double));
-    cholmod_dense* X = cholmod_l_solve(CHOLMOD_A, L, B, &common_);
+    cholmod_dense* X = cholmod_l_solve(CHOLMOD_A, factor_, B, &common_);
     std::memcpy(x.data(), X->x, n * sizeof(double));
     cholmod_l_free_dense(&X, &common_);
     cholmod_l_free_dense(&B, &common_);
-    cholmod_l_free_factor(&L, &common_);
-    cholmod_l_free_sparse(&M, &common_);
     SolveReport report;
     report.iterations = 1;
     report.relative_residual = relative_residual(A, b, x);
     return report;
   }
 
- private:
+  void release() {
+    if (factor_) cholmod_l_free_factor(&factor_, &common_);
+  }
+
   cholmod_common common_;
+  cholmod_factor* factor_ = nullptr;
 };
 
 }  // namespace

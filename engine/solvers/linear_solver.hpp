@@ -28,6 +28,12 @@ class LinearSolver {
   // x holds the initial guess on entry (used by iterative solvers) and the solution on exit.
   virtual SolveReport solve(const CsrMatrix& A, const std::vector<double>& b,
                             std::vector<double>& x) = 0;
+  // Another right-hand side for the matrix of the last solve(), unchanged since: a direct solver
+  // reuses its factorisation.
+  virtual SolveReport solve_again(const CsrMatrix& A, const std::vector<double>& b,
+                                  std::vector<double>& x) {
+    return solve(A, b, x);
+  }
 };
 
 std::unique_ptr<LinearSolver> make_cholmod_solver();

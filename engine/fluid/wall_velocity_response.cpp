@@ -1,0 +1,51 @@
+#include "engine/fluid/wall_velocity_response.hpp"
+
+#include <cmath>
+
+#include <Eigen/Geometry>
+
+namespace washout {
+
+void assemble_wall_velocity_response(const SphContext& ctx, const NeighborList& list,
+                                     const Particles& p, const FluidWork& work,
+                                     std::span<const int> first_column,
+                                     std::span<const Vec3> centre, double dt,
+                                     std::vector<std::vector<double>>& columns) {
+  const std::size_t n = p.fluid_count, rows = work.matrix.rows;
+  for (auto& c : columns) c.assign(rows, 0.0);
+  // The same pair weights as the assembly: laplacian c_iw and divergence f_iw.
+  const double c_scale = -2.0 * ctx.laplacian_correction * ctx.volume;
+  const double scale = ctx.rho0 / dt;
+  const bool planar = ctx.dim == 2;
+#pragma omp parallel for schedule(dynamic, 256)
+  for (std::size_t i = 0; i < n; ++i) {
+    const std::int32_t row = work.unknown[i];
+    if (row < 0) continue;
+    for (std::uint64_t k = list.offset[i]; k < list.offset[i + 1]; ++k) {
+      const std::size_t w = list.index[k];
+      if (w < n) continue;
+      const std::int32_t b = p.body[w];
+      if (b < 0 || first_column[b] < 0) continue;
+      double d[3];
+      ctx.displacement(p, i, w, d);
+      const double r2 = d[0] * d[0] + d[1] * d[1] + d[2] * d[2];
+      const double r = std::sqrt(r2);
+      const double c = c_scale * ctx.kernel.derivative(r) * r / (r2 + ctx.eta2);
+      // d rhs_i / d u_w = (rho0/dt) c_iw n_w (n_w . d_iw)
+      const Vec3 normal(p.normal[0][w], p.normal[1][w], p.normal[2][w]);
+      const double dn = normal.dot(Vec3(d[0], d[1], d[2]));
+      if (dn <= 0.0) continue;  // i behind w's face: the jump has no acceleration term
+      const Vec3 v = scale * c * dn * normal;
+      const Vec3 arm = p.x(w) - centre[b];
+      const Vec3 moment = arm.cross(v);  // v . (w x arm) = w . (arm x v)
+      const int first = first_column[b];
+      for (int a = 0; a < ctx.dim; ++a) columns[first + a][row] += v[a];
+      if (planar)
+        columns[first + 2][row] += moment.z();
+      else
+        for (int a = 0; a < 3; ++a) columns[first + 3 + a][row] += moment[a];
+    }
+  }
+}
+
+}  // namespace washout

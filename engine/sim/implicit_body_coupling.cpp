@@ -1,0 +1,140 @@
+#include "engine/sim/implicit_body_coupling.hpp"
+
+#include <Eigen/Dense>
+
+#include "engine/fluid/wall_velocity_response.hpp"
+#include "engine/sim/rigid_body_system.hpp"
+#include "engine/sim/simulation.hpp"
+
+namespace washout {
+
+CouplingReport ImplicitBodyCoupling::couple(const SphContext& ctx, const NeighborList& list,
+                                            const NeighborGrid& grid, Particles& p,
+                                            FluidWork& work, LinearSolver& solver,
+                                            RigidBodySystem& bodies, const Vec3& gravity,
+                                            double dt) {
+  CouplingReport report;
+  const int dim = ctx.dim, per_body = dim == 2 ? 3 : 6, rotations = dim == 2 ? 1 : 3;
+  std::vector<int> first_column(bodies.size(), -1);
+  std::vector<Vec3> centre(bodies.size());
+  int columns = 0;
+  for (std::size_t b = 0; b < bodies.size(); ++b) {
+    centre[b] = bodies.state(b).position;
+    if (bodies.dynamic(b)) {
+      first_column[b] = columns;
+      columns += per_body;
+    }
+  }
+  bodies.compute_fluid_loads(ctx, grid, p, gravity);  // F(P0)
+  if (columns == 0 || work.matrix.rows == 0) return report;
+
+  // S_k = A^-1 B_k, warm-started from the last step's S_k (by particle).
+  response_.resize(columns);
+  assemble_wall_velocity_response(ctx, list, p, work, first_column, centre, dt, response_);
+  solution_.resize(columns);
+  previous_.resize(columns);
+  const std::size_t n = p.fluid_count;
+  for (int k = 0; k < columns; ++k) {
+    auto& x = solution_[k];
+    x.assign(work.matrix.rows, 0.0);
+    if (previous_[k].size() == n)
+      for (std::size_t i = 0; i < n; ++i)
+        if (work.unknown[i] >= 0) x[work.unknown[i]] = previous_[k][i];
+    const SolveReport solve = solver.solve_again(work.matrix, response_[k], x);
+    if (!solve.converged)
+      throw UnstableError("the body coupling's pressure response did not converge in " +
+                          std::to_string(solve.iterations) + " iterations");
+    ++report.solves;
+    report.iterations += solve.iterations;
+    previous_[k].assign(n, 0.0);
+    for (std::size_t i = 0; i < n; ++i)
+      if (work.unknown[i] >= 0) previous_[k][i] = x[work.unknown[i]];
+  }
+
+  // The load of each response field: G_k. The field replaces p.pressure for the evaluation.
+  std::vector<rigid::BodyLoad> base(bodies.size());
+  for (std::size_t b = 0; b < bodies.size(); ++b) base[b] = bodies.fluid_load(b);
+  Eigen::MatrixXd G = Eigen::MatrixXd::Zero(columns, columns);
+  auto pack = [&](const rigid::BodyLoad& load, int first, Eigen::Ref<Eigen::VectorXd> out) {
+    for (int a = 0; a < dim; ++a) out[first + a] = load.force[a];
+    if (dim == 2)
+      out[first + 2] = load.torque.z();
+    else
+      for (int a = 0; a < 3; ++a) out[first + 3 + a] = load.torque[a];
+  };
+  std::swap(field_, p.pressure);
+  p.pressure.assign(p.size(), 0.0);
+  for (int k = 0; k < columns; ++k) {
+    for (std::size_t i = 0; i < n; ++i)
+      p.pressure[i] = work.unknown[i] >= 0 ? solution_[k][work.unknown[i]] : 0.0;
+    const auto& loads = bodies.loads_of_pressure(ctx, grid, p, Vec3::Zero(), true);
+    for (std::size_t b = 0; b < bodies.size(); ++b)
+      if (first_column[b] >= 0) pack(loads[b], first_column[b], G.col(k));
+  }
+  std::swap(field_, p.pressure);
+
+  // (M / dt - G) dxi = F(P0) + M g + F_c - w x I w
+  Eigen::MatrixXd K = -G;
+  Eigen::VectorXd rhs(columns);
+  for (std::size_t b = 0; b < bodies.size(); ++b) {
+    const int first = first_column[b];
+    if (first < 0) continue;
+    const rigid::BodyModel& model = bodies.model(b);
+    const rigid::BodyState& s = bodies.state(b);
+    const Eigen::Matrix3d R = s.orientation.toRotationMatrix();
+    const Eigen::Matrix3d I = R * model.inertia * R.transpose();
+    const rigid::BodyLoad& contact = bodies.contact_load(b);
+    const Vec3 force = base[b].force + model.mass * gravity + contact.force;
+    const Vec3 torque = base[b].torque + contact.torque - s.angular_velocity.cross(I * s.angular_velocity);
+    for (int a = 0; a < dim; ++a) {
+      K(first + a, first + a) += model.mass / dt;
+      rhs[first + a] = force[a];
+    }
+    if (dim == 2) {
+      K(first + 2, first + 2) += I(2, 2) / dt;
+      rhs[first + 2] = torque.z();
+    } else {
+      K.block(first + 3, first + 3, 3, 3) += I / dt;
+      for (int a = 0; a < 3; ++a) rhs[first + 3 + a] = torque[a];
+    }
+  }
+  const Eigen::VectorXd dxi = K.partialPivLu().solve(rhs);
+  if (!dxi.allFinite()) throw UnstableError("the body coupling's velocity system is singular");
+
+  // The loads, pressure and wall accelerations that belong to the new velocities.
+  const Eigen::VectorXd dF = G * dxi;
+  for (std::size_t b = 0; b < bodies.size(); ++b) {
+    const int first = first_column[b];
+    if (first < 0) continue;
+    rigid::BodyLoad load = base[b];
+    for (int a = 0; a < dim; ++a) load.force[a] += dF[first + a];
+    if (dim == 2)
+      load.torque.z() += dF[first + 2];
+    else
+      for (int a = 0; a < 3; ++a) load.torque[a] += dF[first + 3 + a];
+    bodies.set_fluid_load(b, load);
+  }
+  for (std::size_t i = 0; i < n; ++i) {
+    const std::int32_t row = work.unknown[i];
+    if (row < 0) continue;
+    double sum = 0.0;
+    for (int k = 0; k < columns; ++k) sum += solution_[k][row] * dxi[k];
+    p.pressure[i] += sum;
+  }
+  for (std::size_t w = n; w < p.size(); ++w) {
+    const std::int32_t b = p.body[w];
+    if (b < 0 || first_column[b] < 0) continue;
+    const int first = first_column[b];
+    Vec3 dT = Vec3::Zero(), dw = Vec3::Zero();
+    for (int a = 0; a < dim; ++a) dT[a] = dxi[first + a];
+    if (dim == 2)
+      dw.z() = dxi[first + 2];
+    else
+      for (int a = 0; a < rotations; ++a) dw[a] = dxi[first + 3 + a];
+    const Vec3 du = dT + dw.cross(p.x(w) - centre[b]);
+    for (int a = 0; a < 3; ++a) work.wall_acceleration[a][w] = du[a] / dt;
+  }
+  return report;
+}
+
+}  // namespace washout
