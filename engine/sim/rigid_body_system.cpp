@@ -207,6 +207,20 @@ bool RigidBodySystem::contains(std::size_t b, const Vec3& x) const {
   return shapes_[b].signed_distance(reference, dim_) < 0.0;
 }
 
+bool RigidBodySystem::push_out(std::size_t b, Vec3& x, Vec3& u, double clearance) const {
+  const rigid::BodyState& s = states_[b];
+  const Vec3 reference = s.orientation.conjugate() * (x - s.position) + models_[b].centre_of_mass;
+  const double distance = shapes_[b].signed_distance(reference, dim_);
+  if (distance >= 0.0) return false;
+  const Vec3 normal_ref = shapes_[b].normal(reference, dim_, 1e-3 * clearance);
+  const Vec3 normal = s.orientation * normal_ref;
+  x += (clearance - distance) * normal;
+  const Vec3 u_body = s.velocity + s.angular_velocity.cross(x - s.position);
+  const double inward = (u - u_body).dot(normal);
+  if (inward < 0.0) u -= inward * normal;
+  return true;
+}
+
 void RigidBodySystem::record(double time) {
   for (std::size_t b = 0; b < size(); ++b) {
     Series& out = series_[b];

@@ -327,12 +327,24 @@ void Simulation::check_health(StepReport& report) {
       sees_wall = neighbors_.index[k] >= n;
     bool in_wall = false;
     if (sees_wall) {
-      const Vec3 x = particles_.x(i);
+      // A particle found inside a wall or a body (pressed through a closing gap) is put back
+      // d0/2 outside it and loses its inward velocity: left inside, its pressure equation
+      // would see walls all round and throw it out at any speed.
+      Vec3 x = particles_.x(i), u = particles_.u(i);
+      const double clearance = 0.5 * ctx_.d0;
       for (std::size_t w = 0; w < model_.walls.size() && !in_wall; ++w) {
-        Vec3 shift = Vec3::Zero();
+        Vec3 shift = Vec3::Zero(), wall_velocity = Vec3::Zero();
         for (const auto& mw : moving_walls_)
-          if (mw.wall_index == w) shift = mw.displacement;
-        in_wall = model_.walls[w].shape.signed_distance(x - shift, dim) < 0.0;
+          if (mw.wall_index == w) shift = mw.displacement, wall_velocity = mw.velocity;
+        const Shape& shape = model_.walls[w].shape;
+        const double distance = shape.signed_distance(x - shift, dim);
+        in_wall = distance < 0.0;
+        if (in_wall) {
+          const Vec3 normal = shape.normal(x - shift, dim, 1e-3 * clearance);
+          x += (clearance - distance) * normal;
+          const double inward = (u - wall_velocity).dot(normal);
+          if (inward < 0.0) u -= inward * normal;
+        }
       }
       // Inside a body: test each body it sees once (neighbours of one body come in a row).
       std::int32_t tested = -1;
@@ -341,8 +353,13 @@ void Simulation::check_health(StepReport& report) {
         const std::int32_t b = particles_.body[neighbors_.index[k]];
         if (b < 0 || b == tested) continue;
         tested = b;
-        in_wall = bodies_->contains(static_cast<std::size_t>(b), x);
+        in_wall = bodies_->push_out(static_cast<std::size_t>(b), x, u, clearance);
       }
+      if (in_wall)
+        for (int a = 0; a < dim; ++a) {
+          particles_.position[a][i] = x[a];
+          particles_.velocity[a][i] = u[a];
+        }
     }
     if (in_wall) {
       ++inside;
