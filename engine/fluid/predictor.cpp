@@ -13,7 +13,6 @@ void predict_velocity(const SphContext& ctx, const NeighborList& list, const Par
   const std::size_t n = p.fluid_count;
   for (int a = 0; a < 3; ++a) work.u_star[a].resize(n);
   const bool turbulent = !work.eddy_viscosity.empty();
-  const double lap_scale = 2.0 * ctx.laplacian_correction * ctx.volume;
 #pragma omp parallel for schedule(static)
   for (std::size_t i = 0; i < n; ++i) {
     double lap[3] = {0, 0, 0};
@@ -24,8 +23,7 @@ void predict_velocity(const SphContext& ctx, const NeighborList& list, const Par
       ctx.displacement(p, i, j, d);
       const double r2 = d[0] * d[0] + d[1] * d[1] + d[2] * d[2];
       const double r = std::sqrt(r2);
-      // lap_scale * (r . grad W) / (r^2 + eta^2) with r . grad W = W'(r) r
-      double weight = lap_scale * ctx.kernel.derivative(r) * r / (r2 + ctx.eta2);
+      double weight = ctx.laplacian_weight(r, r2);
       const bool fluid = j < n;
       if (turbulent) weight *= viscosity + 0.5 * (nu_t_i + (fluid ? work.eddy_viscosity[j] : nu_t_i));
       else weight *= viscosity;

@@ -35,16 +35,6 @@ PpeStatistics assemble_pressure_poisson(const SphContext& ctx, const NeighborLis
                                         const Particles& p, const Vec3& gravity, double alpha,
                                         double dt, FluidWork& work) {
   const std::size_t n = p.fluid_count;
-  // A particle with no fluid neighbour (a drop, or one left in the closing gap between a body
-  // and the floor) has no pressure equation of its own: it takes P = 0 like the free surface.
-#pragma omp parallel for schedule(static)
-  for (std::size_t i = 0; i < n; ++i) {
-    if (work.free_surface[i]) continue;
-    bool alone = true;
-    for (std::uint64_t k = list.offset[i]; k < list.offset[i + 1] && alone; ++k)
-      alone = list.index[k] >= n;
-    if (alone) work.free_surface[i] = 1;
-  }
   work.unknown.assign(n, -1);
   std::size_t rows = 0;
   for (std::size_t i = 0; i < n; ++i)
@@ -71,7 +61,6 @@ PpeStatistics assemble_pressure_poisson(const SphContext& ctx, const NeighborLis
   A.value.resize(A.row_start[rows]);
   work.rhs.assign(rows, 0.0);
 
-  const double c_scale = -2.0 * ctx.laplacian_correction * ctx.volume;  // c_ij = c_scale W' r/(r^2+eta^2)
   const double g_scale = ctx.gradient_correction * ctx.volume;
   const double density_scale = alpha * ctx.rho0 / (dt * dt);
 #pragma omp parallel for schedule(static)
@@ -86,7 +75,7 @@ PpeStatistics assemble_pressure_poisson(const SphContext& ctx, const NeighborLis
       ctx.displacement(p, i, j, d);
       const double r2 = d[0] * d[0] + d[1] * d[1] + d[2] * d[2];
       const double r = std::sqrt(r2);
-      const double c = c_scale * ctx.kernel.derivative(r) * r / (r2 + ctx.eta2);
+      const double c = -ctx.laplacian_weight(r, r2);  // c_ij >= 0
       if (j < n) {
         diagonal += c;
         if (work.unknown[j] >= 0) {

@@ -34,6 +34,12 @@ struct SphContext {
     d[2] = p.position[2][i] - p.position[2][j];
     if (periodic.any()) periodic.minimum_image(d);
   }
+
+  // The laplacian's pair weight 2 V (r . grad W) / (r^2 + eta^2) (METHOD.md, with r . grad W =
+  // W'(r) r and the lattice normalisation); <lap f>_i = sum_j laplacian_weight (f_i - f_j).
+  double laplacian_weight(double r, double r2) const {
+    return 2.0 * laplacian_correction * volume * kernel.derivative(r) * r / (r2 + eta2);
+  }
 };
 
 }  // namespace washout

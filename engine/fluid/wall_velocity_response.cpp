@@ -13,8 +13,6 @@ void assemble_wall_velocity_response(const SphContext& ctx, const NeighborList& 
                                      std::vector<std::vector<double>>& columns) {
   const std::size_t n = p.fluid_count, rows = work.matrix.rows;
   for (auto& c : columns) c.assign(rows, 0.0);
-  // The same pair weights as the assembly: laplacian c_iw and divergence f_iw.
-  const double c_scale = -2.0 * ctx.laplacian_correction * ctx.volume;
   const double scale = ctx.rho0 / dt;
   const bool planar = ctx.dim == 2;
 #pragma omp parallel for schedule(dynamic, 256)
@@ -30,7 +28,7 @@ void assemble_wall_velocity_response(const SphContext& ctx, const NeighborList& 
       ctx.displacement(p, i, w, d);
       const double r2 = d[0] * d[0] + d[1] * d[1] + d[2] * d[2];
       const double r = std::sqrt(r2);
-      const double c = c_scale * ctx.kernel.derivative(r) * r / (r2 + ctx.eta2);
+      const double c = -ctx.laplacian_weight(r, r2);  // c_iw of the assembly
       // d rhs_i / d u_w = (rho0/dt) c_iw n_w (n_w . d_iw)
       const Vec3 normal(p.normal[0][w], p.normal[1][w], p.normal[2][w]);
       const double dn = normal.dot(Vec3(d[0], d[1], d[2]));
