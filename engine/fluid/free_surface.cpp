@@ -3,18 +3,23 @@
 // With h = 1.2 d0 the top particle layer of still water sits near 0.75-0.83 rho0 and the layer
 // below near 0.95-0.97 rho0: the default threshold 0.9 keeps them well apart (0.95 made the
 // second layer flicker between Dirichlet and unknown).
+// A particle with no fluid neighbour (a drop, or one left in the closing gap between a body and
+// the floor) has no pressure equation of its own, whatever its density: it takes P = 0 too.
 #include "engine/fluid/isph_stages.hpp"
 
 namespace washout {
 
-std::size_t detect_free_surface(const SphContext& ctx, const Particles& p, double threshold,
-                                FluidWork& work) {
+std::size_t detect_free_surface(const SphContext& ctx, const NeighborList& list,
+                                const Particles& p, double threshold, FluidWork& work) {
   const std::size_t n = p.fluid_count;
   work.free_surface.assign(n, 0);
   std::size_t count = 0;
 #pragma omp parallel for reduction(+ : count) schedule(static)
   for (std::size_t i = 0; i < n; ++i) {
-    if (p.density[i] < threshold * ctx.rho0) {
+    bool alone = true;
+    for (std::uint64_t k = list.offset[i]; k < list.offset[i + 1] && alone; ++k)
+      alone = list.index[k] >= n;
+    if (alone || p.density[i] < threshold * ctx.rho0) {
       work.free_surface[i] = 1;
       ++count;
     }

@@ -13,9 +13,10 @@ namespace washout {
 // lattice gives rho0 (summation_density.cpp).
 void compute_summation_density(const SphContext& ctx, const NeighborList& list, Particles& p);
 
-// Free surface: <rho>_i < threshold * rho0 takes P = 0. Returns the count (free_surface.cpp).
-std::size_t detect_free_surface(const SphContext& ctx, const Particles& p, double threshold,
-                                FluidWork& work);
+// Free surface: <rho>_i < threshold * rho0, or no fluid neighbour, takes P = 0. Returns the
+// count (free_surface.cpp).
+std::size_t detect_free_surface(const SphContext& ctx, const NeighborList& list,
+                                const Particles& p, double threshold, FluidWork& work);
 
 // Smagorinsky sub-particle-scale eddy viscosity nu_t = (C_s d0)^2 |S| (turbulence_smagorinsky.cpp).
 void compute_eddy_viscosity(const SphContext& ctx, const NeighborList& list, const Particles& p,

@@ -68,6 +68,14 @@ Simulation::Simulation(Model model)
     bodies_->place_particles(particles_);
   }
   inside_wall_.assign(particles_.fluid_count, 0);
+  // "auto": the dynamic wall condition where the scene has dynamic bodies (their velocities are
+  // then solved with the pressure); the Neumann form otherwise, which keeps still water and
+  // dam-break fronts slightly closer to the references (docs/method.md).
+  bool dynamic_bodies = false;
+  for (std::size_t b = 0; bodies_ && b < bodies_->size(); ++b)
+    dynamic_bodies = dynamic_bodies || bodies_->dynamic(b);
+  work_.dynamic_wall = model_.params.wall_pressure == "dynamic" ||
+                       (model_.params.wall_pressure == "auto" && dynamic_bodies);
 
   // Domain: given, or the scene's bounding box with a generous margin (for blow-up detection).
   const auto& prm = model_.params;
@@ -148,7 +156,7 @@ StepReport Simulation::step_until(double until) {
     auto s = timer_.measure("density");
     compute_summation_density(ctx_, neighbors_, particles_);
     report.free_surface_particles =
-        detect_free_surface(ctx_, particles_, prm.free_surface_threshold, work_);
+        detect_free_surface(ctx_, neighbors_, particles_, prm.free_surface_threshold, work_);
   }
   {
     auto s = timer_.measure("wall_markers");
@@ -173,16 +181,6 @@ StepReport Simulation::step_until(double until) {
     }
   }
   if (bodies_) bodies_->set_prescribed_velocities(t_new, particles_);
-  if (step_ == 0) {
-    // "auto": the dynamic wall condition where the scene has dynamic bodies (their velocities
-    // are then solved with the pressure); the Neumann form otherwise, which keeps still water
-    // and dam-break fronts slightly closer to the references (docs/method.md).
-    bool dynamic_bodies = false;
-    for (std::size_t b = 0; bodies_ && b < bodies_->size(); ++b)
-      dynamic_bodies = dynamic_bodies || bodies_->dynamic(b);
-    work_.dynamic_wall = prm.wall_pressure == "dynamic" ||
-                         (prm.wall_pressure == "auto" && dynamic_bodies);
-  }
   if (work_.dynamic_wall) {
     std::vector<std::uint8_t> solved(bodies_ ? bodies_->size() : 0, 0);
     for (std::size_t b = 0; b < solved.size(); ++b) solved[b] = bodies_->dynamic(b);
