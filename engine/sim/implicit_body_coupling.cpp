@@ -3,10 +3,34 @@
 #include <Eigen/Dense>
 
 #include "engine/fluid/wall_velocity_response.hpp"
+#include "engine/rigid/body_state.hpp"
 #include "engine/sim/rigid_body_system.hpp"
 #include "engine/sim/simulation.hpp"
 
 namespace washout {
+namespace {
+
+// A body's block of the stacked degrees of freedom: linear then angular components
+// (x, y, w_z in 2D; x, y, z, w_x, w_y, w_z in 3D).
+void pack(const Vec3& linear, const Vec3& angular, int dim, int first,
+          Eigen::Ref<Eigen::VectorXd> out) {
+  for (int a = 0; a < dim; ++a) out[first + a] = linear[a];
+  if (dim == 2)
+    out[first + 2] = angular.z();
+  else
+    for (int a = 0; a < 3; ++a) out[first + 3 + a] = angular[a];
+}
+
+void unpack(const Eigen::VectorXd& in, int dim, int first, Vec3& linear, Vec3& angular) {
+  linear = angular = Vec3::Zero();
+  for (int a = 0; a < dim; ++a) linear[a] = in[first + a];
+  if (dim == 2)
+    angular.z() = in[first + 2];
+  else
+    for (int a = 0; a < 3; ++a) angular[a] = in[first + 3 + a];
+}
+
+}  // namespace
 
 CouplingReport ImplicitBodyCoupling::couple(const SphContext& ctx, const NeighborList& list,
                                             const NeighborGrid& grid, Particles& p,
@@ -14,7 +38,7 @@ CouplingReport ImplicitBodyCoupling::couple(const SphContext& ctx, const Neighbo
                                             RigidBodySystem& bodies, const Vec3& gravity,
                                             double dt) {
   CouplingReport report;
-  const int dim = ctx.dim, per_body = dim == 2 ? 3 : 6, rotations = dim == 2 ? 1 : 3;
+  const int dim = ctx.dim, per_body = dim == 2 ? 3 : 6;
   std::vector<int> first_column(bodies.size(), -1);
   std::vector<Vec3> centre(bodies.size());
   int columns = 0;
@@ -55,13 +79,6 @@ CouplingReport ImplicitBodyCoupling::couple(const SphContext& ctx, const Neighbo
   std::vector<rigid::BodyLoad> base(bodies.size());
   for (std::size_t b = 0; b < bodies.size(); ++b) base[b] = bodies.fluid_load(b);
   Eigen::MatrixXd G = Eigen::MatrixXd::Zero(columns, columns);
-  auto pack = [&](const rigid::BodyLoad& load, int first, Eigen::Ref<Eigen::VectorXd> out) {
-    for (int a = 0; a < dim; ++a) out[first + a] = load.force[a];
-    if (dim == 2)
-      out[first + 2] = load.torque.z();
-    else
-      for (int a = 0; a < 3; ++a) out[first + 3 + a] = load.torque[a];
-  };
   std::swap(field_, p.pressure);
   p.pressure.assign(p.size(), 0.0);
   for (int k = 0; k < columns; ++k) {
@@ -69,7 +86,8 @@ CouplingReport ImplicitBodyCoupling::couple(const SphContext& ctx, const Neighbo
       p.pressure[i] = work.unknown[i] >= 0 ? solution_[k][work.unknown[i]] : 0.0;
     const auto& loads = bodies.loads_of_pressure(ctx, grid, p, Vec3::Zero(), true);
     for (std::size_t b = 0; b < bodies.size(); ++b)
-      if (first_column[b] >= 0) pack(loads[b], first_column[b], G.col(k));
+      if (first_column[b] >= 0)
+        pack(loads[b].force, loads[b].torque, dim, first_column[b], G.col(k));
   }
   std::swap(field_, p.pressure);
 
@@ -81,22 +99,16 @@ CouplingReport ImplicitBodyCoupling::couple(const SphContext& ctx, const Neighbo
     if (first < 0) continue;
     const rigid::BodyModel& model = bodies.model(b);
     const rigid::BodyState& s = bodies.state(b);
-    const Eigen::Matrix3d R = s.orientation.toRotationMatrix();
-    const Eigen::Matrix3d I = R * model.inertia * R.transpose();
+    const Eigen::Matrix3d I = rigid::world_inertia(model, s.orientation);
     const rigid::BodyLoad& contact = bodies.contact_load(b);
-    const Vec3 force = base[b].force + model.mass * gravity + contact.force;
-    const Vec3 torque = base[b].torque + contact.torque - s.angular_velocity.cross(I * s.angular_velocity);
-    for (int a = 0; a < dim; ++a) {
-      K(first + a, first + a) += model.mass / dt;
-      rhs[first + a] = force[a];
-    }
-    if (dim == 2) {
+    pack(base[b].force + model.mass * gravity + contact.force,
+         base[b].torque + contact.torque - s.angular_velocity.cross(I * s.angular_velocity), dim,
+         first, rhs);
+    for (int a = 0; a < dim; ++a) K(first + a, first + a) += model.mass / dt;
+    if (dim == 2)
       K(first + 2, first + 2) += I(2, 2) / dt;
-      rhs[first + 2] = torque.z();
-    } else {
+    else
       K.block(first + 3, first + 3, 3, 3) += I / dt;
-      for (int a = 0; a < 3; ++a) rhs[first + 3 + a] = torque[a];
-    }
   }
   const Eigen::VectorXd dxi = K.partialPivLu().solve(rhs);
   if (!dxi.allFinite()) throw UnstableError("the body coupling's velocity system is singular");
@@ -106,12 +118,11 @@ CouplingReport ImplicitBodyCoupling::couple(const SphContext& ctx, const Neighbo
   for (std::size_t b = 0; b < bodies.size(); ++b) {
     const int first = first_column[b];
     if (first < 0) continue;
+    Vec3 dforce, dtorque;
+    unpack(dF, dim, first, dforce, dtorque);
     rigid::BodyLoad load = base[b];
-    for (int a = 0; a < dim; ++a) load.force[a] += dF[first + a];
-    if (dim == 2)
-      load.torque.z() += dF[first + 2];
-    else
-      for (int a = 0; a < 3; ++a) load.torque[a] += dF[first + 3 + a];
+    load.force += dforce;
+    load.torque += dtorque;
     bodies.set_fluid_load(b, load);
   }
   for (std::size_t i = 0; i < n; ++i) {
@@ -124,13 +135,8 @@ CouplingReport ImplicitBodyCoupling::couple(const SphContext& ctx, const Neighbo
   for (std::size_t w = n; w < p.size(); ++w) {
     const std::int32_t b = p.body[w];
     if (b < 0 || first_column[b] < 0) continue;
-    const int first = first_column[b];
-    Vec3 dT = Vec3::Zero(), dw = Vec3::Zero();
-    for (int a = 0; a < dim; ++a) dT[a] = dxi[first + a];
-    if (dim == 2)
-      dw.z() = dxi[first + 2];
-    else
-      for (int a = 0; a < rotations; ++a) dw[a] = dxi[first + 3 + a];
+    Vec3 dT, dw;
+    unpack(dxi, dim, first_column[b], dT, dw);
     const Vec3 du = dT + dw.cross(p.x(w) - centre[b]);
     for (int a = 0; a < 3; ++a) work.wall_acceleration[a][w] = du[a] / dt;
   }

@@ -201,15 +201,18 @@ long RigidBodySystem::advance(double t, double dt, const Vec3& gravity, Particle
   return last_report_.substeps;
 }
 
-bool RigidBodySystem::contains(std::size_t b, const Vec3& x) const {
+Vec3 RigidBodySystem::reference_point(std::size_t b, const Vec3& x) const {
   const rigid::BodyState& s = states_[b];
-  const Vec3 reference = s.orientation.conjugate() * (x - s.position) + models_[b].centre_of_mass;
-  return shapes_[b].signed_distance(reference, dim_) < 0.0;
+  return s.orientation.conjugate() * (x - s.position) + models_[b].centre_of_mass;
+}
+
+bool RigidBodySystem::contains(std::size_t b, const Vec3& x) const {
+  return shapes_[b].signed_distance(reference_point(b, x), dim_) < 0.0;
 }
 
 bool RigidBodySystem::push_out(std::size_t b, Vec3& x, Vec3& u, double clearance) const {
   const rigid::BodyState& s = states_[b];
-  const Vec3 reference = s.orientation.conjugate() * (x - s.position) + models_[b].centre_of_mass;
+  const Vec3 reference = reference_point(b, x);
   const double distance = shapes_[b].signed_distance(reference, dim_);
   if (distance >= 0.0) return false;
   const Vec3 normal_ref = shapes_[b].normal(reference, dim_, 1e-3 * clearance);

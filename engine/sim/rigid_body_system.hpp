@@ -77,6 +77,8 @@ class RigidBodySystem {
 
  private:
   void place_body(std::size_t b, Particles& p) const;
+  // x (world) in body b's reference pose, where its shape is defined.
+  Vec3 reference_point(std::size_t b, const Vec3& x) const;
 
   int dim_ = 2;
   std::vector<rigid::BodyModel> models_;
