@@ -8,7 +8,7 @@
 #include <string>
 #include <vector>
 
-#include "support/scene_runner.hpp"
+#include "support/box_draft.hpp"
 
 namespace washout {
 namespace {
@@ -25,22 +25,16 @@ Settled settle(const std::string& scene, int dim, double d0, double end_time) {
   const cli::RunOutcome outcome = testing::run_scene(scene, name, {{"d0", std::to_string(d0)}});
   io::RunFileReader file(outcome.h5_path);
   const auto time = file.read_doubles("/bodies/box/time");
-  const auto position = file.read_doubles("/bodies/box/position");
   const auto angle = file.read_doubles("/bodies/box/angle");
   std::vector<std::string> probes = dim == 2 ? std::vector<std::string>{"level_left", "level_right"}
                                              : std::vector<std::string>{"level"};
+  const auto drafts = testing::box_draft(file, probes, dim - 1, 0.05);
   Settled s;
   double sum2 = 0;
   int n = 0;
-  const int up = dim - 1;
   for (std::size_t r = 0; r < time.size(); ++r) {
     if (time[r] < end_time - 1.0) continue;
-    double level = 0;
-    for (const auto& p : probes)
-      level += testing::interpolate(file.read_doubles("/probes/" + p + "/time"),
-                                    file.read_doubles("/probes/" + p + "/value"), time[r]);
-    level /= probes.size();
-    const double draft = level - (position[3 * r + up] - 0.05);
+    const double draft = drafts[r];
     s.draft += draft;
     sum2 += draft * draft;
     s.angle = std::max(s.angle, std::abs(angle[r]));

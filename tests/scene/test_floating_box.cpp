@@ -9,7 +9,7 @@
 #include <cstdio>
 #include <string>
 
-#include "support/scene_runner.hpp"
+#include "support/box_draft.hpp"
 
 namespace washout {
 namespace {
@@ -76,16 +76,11 @@ TEST(FloatingBox, ReleasedBoxHeavesAboutTheArchimedesDraft) {
   ASSERT_EQ(outcome.exit_code, 0);
   io::RunFileReader file(outcome.h5_path);
   const auto time = file.read_doubles("/bodies/box/time");
-  const auto position = file.read_doubles("/bodies/box/position");
   const auto angle = file.read_doubles("/bodies/box/angle");
+  const auto drafts = testing::box_draft(file, {"level_left", "level_right"}, 1, half_height);
   double deepest = 0, shallowest = 1, roll = 0;
   for (std::size_t r = 0; r < time.size(); ++r) {
-    double level = 0;
-    for (const char* probe : {"level_left", "level_right"})
-      level += 0.5 * testing::interpolate(
-                         file.read_doubles(std::string("/probes/") + probe + "/time"),
-                         file.read_doubles(std::string("/probes/") + probe + "/value"), time[r]);
-    const double draft = level - (position[3 * r + 1] - half_height);
+    const double draft = drafts[r];
     deepest = std::max(deepest, draft);
     if (time[r] > 0.2) shallowest = std::min(shallowest, draft);
     roll = std::max(roll, std::abs(angle[r]));
