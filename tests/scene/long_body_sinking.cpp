@@ -8,6 +8,7 @@
 #include <cstdio>
 #include <string>
 
+#include "support/body_series.hpp"
 #include "support/scene_runner.hpp"
 
 namespace washout {
@@ -32,23 +33,19 @@ TEST(SinkingBoxLong, LandsAndRestsOnTheFloor) {
     const cli::RunOutcome outcome =
         testing::run_scene("sinking_box_2d.lua", name, {{"d0", std::to_string(d0)}});
     io::RunFileReader file(outcome.h5_path);
-    const auto time = file.read_doubles("/bodies/box/time");
-    const auto x = file.read_doubles("/bodies/box/position");
-    const auto v = file.read_doubles("/bodies/box/velocity");
-    const auto fc = file.read_doubles("/bodies/box/force_contact");
-    const auto ff = file.read_doubles("/bodies/box/force_fluid");
+    const testing::BodySeries box = testing::read_body_series(file, "box");
     const auto substeps = file.read_doubles("/stats/substeps");
     double lowest = 1.0, speed = 0, balance = 0;
     int n = 0;
-    for (std::size_t r = 0; r < time.size(); ++r) {
-      lowest = std::min(lowest, x[3 * r + 1] - 0.5 * H);
-      if (time[r] < time.back() - 0.2) continue;
-      speed = std::max(speed, std::hypot(v[3 * r], v[3 * r + 1]));
-      balance += fc[3 * r + 1] + ff[3 * r + 1];
+    for (std::size_t r = 0; r < box.time.size(); ++r) {
+      lowest = std::min(lowest, box.position[3 * r + 1] - 0.5 * H);
+      if (box.time[r] < box.time.back() - 0.2) continue;
+      speed = std::max(speed, std::hypot(box.velocity[3 * r], box.velocity[3 * r + 1]));
+      balance += box.force_contact[3 * r + 1] + box.force_fluid[3 * r + 1];
       ++n;
     }
     balance /= n;
-    const double bottom = x[3 * (time.size() - 1) + 1] - 0.5 * H;
+    const double bottom = box.position[3 * (box.time.size() - 1) + 1] - 0.5 * H;
     std::printf(
         "d0 = %.3f m: lowest bottom %.2e m, final bottom %.2e m, speed %.1e m/s, "
         "(F_c + F_f) / M g - 1 = %+.2f %%, sub-steps in the last step %.0f\n",

@@ -8,6 +8,7 @@
 #include <cstdio>
 #include <string>
 
+#include "support/body_series.hpp"
 #include "support/scene_runner.hpp"
 
 namespace washout {
@@ -33,26 +34,25 @@ TEST(BodyResting, HeavyBoxStaysOnTheFloorUnderWater) {
         testing::run_scene("sinking_box_2d.lua", name,
                            {{"d0", std::to_string(d0)}, {"drop", "0"}, {"end_time", "0.3"}});
     io::RunFileReader file(outcome.h5_path);
-    const auto time = file.read_doubles("/bodies/box/time");
-    const auto x = file.read_doubles("/bodies/box/position");
-    const auto v = file.read_doubles("/bodies/box/velocity");
-    const auto fc = file.read_doubles("/bodies/box/force_contact");
-    const auto ff = file.read_doubles("/bodies/box/force_fluid");
+    const testing::BodySeries box = testing::read_body_series(file, "box");
     const auto substeps = file.read_doubles("/stats/substeps");
-    const std::size_t rows = x.size() / 3;
+    const std::size_t rows = box.position.size() / 3;
     double offset = 0, speed = 0, balance = 0;
     for (std::size_t r = 0; r < rows; ++r) {
-      offset = std::max(offset, std::abs(x[3 * r + 1] - 0.5 * H));
-      if (time[r] >= 0.05) speed = std::max(speed, std::hypot(v[3 * r], v[3 * r + 1]));
-      balance = std::max(balance, std::abs(fc[3 * r + 1] + ff[3 * r + 1] - weight) / weight);
+      offset = std::max(offset, std::abs(box.position[3 * r + 1] - 0.5 * H));
+      if (box.time[r] >= 0.05)
+        speed = std::max(speed, std::hypot(box.velocity[3 * r], box.velocity[3 * r + 1]));
+      balance = std::max(
+          balance,
+          std::abs(box.force_contact[3 * r + 1] + box.force_fluid[3 * r + 1] - weight) / weight);
     }
     const double fewest = *std::min_element(substeps.begin(), substeps.end());
     std::printf(
         "d0 = %.3f m: largest offset from the floor %.1e m, speed %.1e m/s, "
         "|F_c + F_f - M g| / M g = %.1e, F_f = %.2f N/m, F_c = %.2f N/m, "
         "sub-steps per step %.0f..%.0f\n",
-        d0, offset, speed, balance, ff[3 * rows - 2], fc[3 * rows - 2], fewest,
-        *std::max_element(substeps.begin(), substeps.end()));
+        d0, offset, speed, balance, box.force_fluid[3 * rows - 2], box.force_contact[3 * rows - 2],
+        fewest, *std::max_element(substeps.begin(), substeps.end()));
     EXPECT_LT(offset, 0.01 * d0);
     EXPECT_LT(speed, 1e-6);
     EXPECT_LT(balance, 1e-3);
