@@ -7,8 +7,10 @@
 #include <filesystem>
 #include <vector>
 
+#include "engine/cli/body_report.hpp"
 #include "engine/cli/frame_output.hpp"
 #include "engine/cli/progress_display.hpp"
+#include "engine/io/run_file_reader.hpp"
 #include "engine/io/run_file_writer.hpp"
 
 namespace washout::cli {
@@ -71,6 +73,8 @@ RunOutcome run_scene(const RunRequest& request) {
       observers.push_back(frame_writer.get());
     }
     outcome.summary = sim.run(outcome.h5_path, observers);
+    // Each body's CSV and wash-out summary, also after an unstable run (its file stays readable).
+    outcome.bodies = report_bodies(outcome.h5_path, out_dir, sim.params().gravity, request.log);
     if (outcome.summary.status == RunStatus::Unstable) outcome.exit_code = kUnstable;
   } catch (const SceneError& e) {
     outcome.exit_code = kBadInput;
@@ -82,6 +86,9 @@ RunOutcome run_scene(const RunRequest& request) {
     if (!e.parameter().empty() && outcome.error.find(e.parameter()) == std::string::npos)
       outcome.error += " (parameter '" + e.parameter() + "')";
   } catch (const io::OutputError& e) {
+    outcome.exit_code = kOutputFailed;
+    outcome.error = e.what();
+  } catch (const io::RunFileError& e) {  // the body report could not read the run back
     outcome.exit_code = kOutputFailed;
     outcome.error = e.what();
   }

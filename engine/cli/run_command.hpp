@@ -4,6 +4,7 @@
 #include <cstdio>
 #include <string>
 
+#include "engine/cli/body_report.hpp"
 #include "engine/lua/lua_scene.hpp"
 #include "engine/sim/simulation.hpp"
 
@@ -27,6 +28,7 @@ struct RunOutcome {
   std::string error;  // for exit codes 1 and 3
   RunSummary summary;
   std::string h5_path;
+  std::vector<BodyReport> bodies;  // one per /bodies/NAME: its CSV and summary
 };
 
 RunOutcome run_scene(const RunRequest& request);

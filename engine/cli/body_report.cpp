@@ -1,0 +1,246 @@
+#include "engine/cli/body_report.hpp"
+
+#include <hdf5.h>
+
+#include <cmath>
+#include <filesystem>
+#include <sstream>
+
+#include "engine/io/run_file_reader.hpp"
+#include "engine/io/run_file_writer.hpp"
+
+namespace washout::cli {
+namespace {
+
+Vec3 row3(const std::vector<double>& v, std::size_t k) {
+  return Vec3(v[3 * k], v[3 * k + 1], v[3 * k + 2]);
+}
+
+herr_t collect_name(hid_t, const char* name, const H5L_info_t*, void* data) {
+  static_cast<std::vector<std::string>*>(data)->push_back(name);
+  return 0;
+}
+
+// The text attribute `name` of an object (the body's "mass" is written as text).
+std::string read_text_attribute(hid_t object, const char* name) {
+  if (H5Aexists(object, name) <= 0) return "";
+  hid_t attr = H5Aopen(object, name, H5P_DEFAULT);
+  hid_t type = H5Aget_type(attr);
+  std::string value;
+  if (H5Tget_class(type) == H5T_STRING) {
+    value.assign(H5Tget_size(type), '\0');
+    hid_t memory = H5Tcopy(H5T_C_S1);
+    H5Tset_size(memory, value.size());
+    H5Tset_strpad(memory, H5T_STR_NULLPAD);
+    H5Tset_cset(memory, H5Tget_cset(type));  // the writer stores UTF-8; no conversion
+    H5Aread(attr, memory, value.data());
+    H5Tclose(memory);
+    while (!value.empty() && value.back() == '\0') value.pop_back();
+  }
+  H5Tclose(type);
+  H5Aclose(attr);
+  return value;
+}
+
+void write_double_attribute(hid_t object, const std::string& name, const double* values,
+                            hsize_t count, const std::string& where) {
+  if (H5Aexists(object, name.c_str()) > 0) H5Adelete(object, name.c_str());
+  hid_t space = count == 1 ? H5Screate(H5S_SCALAR) : H5Screate_simple(1, &count, nullptr);
+  hid_t attr = H5Acreate2(object, name.c_str(), H5T_NATIVE_DOUBLE, space, H5P_DEFAULT, H5P_DEFAULT);
+  const herr_t status = attr < 0 ? -1 : H5Awrite(attr, H5T_NATIVE_DOUBLE, values);
+  if (attr >= 0) H5Aclose(attr);
+  H5Sclose(space);
+  if (status < 0) throw io::OutputError("cannot write attribute " + name + " of " + where);
+}
+
+// A time for the printed summary: "0.412 s", or "never".
+std::string when(double t) {
+  if (std::isnan(t)) return "never";
+  char b[32];
+  std::snprintf(b, sizeof b, "%.3f s", t);
+  return b;
+}
+
+}  // namespace
+
+BodySummary summarize_body(const BodyTrack& track, const Vec3& gravity,
+                           const BodyReportSettings& settings) {
+  BodySummary s;
+  const std::size_t n = track.rows();
+  const double g = gravity.norm();
+  s.weight = track.mass * g;
+  if (n == 0) return s;
+  // Up is against gravity; horizontal is x, the flume axis of every scene with a flow.
+  const Vec3 up = g > 0 ? Vec3(-gravity / g) : (track.dim == 2 ? Vec3::UnitY() : Vec3::UnitZ());
+  const Vec3 x0 = row3(track.position, 0);
+  const double angle0 = track.angle.empty() ? 0.0 : track.angle[0];
+
+  bool carried = false;
+  std::size_t release_start = n;  // first row of the current run of released rows
+  for (std::size_t k = 0; k < n; ++k) {
+    const double t = track.time[k];
+    const Vec3 ff = row3(track.force_fluid, k);
+    // The body is dry before the wave: the first load above 1 % of its weight is the wave.
+    if (std::isnan(s.arrival_time) && ff.norm() > settings.arrival_fraction * s.weight)
+      s.arrival_time = t;
+    if (std::abs(ff.x()) > std::abs(s.peak_force_horizontal)) {
+      s.peak_force_horizontal = ff.x();
+      s.peak_force_horizontal_time = t;
+    }
+    const double fv = ff.dot(up);
+    if (std::abs(fv) > std::abs(s.peak_force_vertical)) {
+      s.peak_force_vertical = fv;
+      s.peak_force_vertical_time = t;
+    }
+    if (!track.angle.empty() && std::abs(track.angle[k] - angle0) > std::abs(s.peak_angle)) {
+      s.peak_angle = track.angle[k] - angle0;
+      s.peak_angle_time = t;
+    }
+    // Leaving the support: only the vertical part of the contact is the support's (frictionless
+    // side walls push across the flume). Once the support has carried at least half the weight,
+    // the body has left it at the first row from which the vertical contact stays below 1 % of
+    // the weight for release_hold seconds; shorter gaps are hops on the support.
+    if (std::isnan(s.leave_time)) {
+      const double fc = row3(track.force_contact, k).dot(up);
+      if (fc >= settings.carried_fraction * s.weight) carried = true;
+      if (carried && std::abs(fc) < settings.released_fraction * s.weight) {
+        if (release_start == n) release_start = k;
+        if (t - track.time[release_start] >= settings.release_hold)
+          s.leave_time = track.time[release_start];
+      } else {
+        release_start = n;
+      }
+    }
+  }
+  const Vec3 d = row3(track.position, n - 1) - x0;
+  s.displacement = {d.x(), d.y(), d.z()};
+  return s;
+}
+
+std::vector<BodyTrack> read_body_tracks(const std::string& h5_path) {
+  std::vector<BodyTrack> tracks;
+  {
+    // Body names and masses (group attributes, which RunFileReader does not read).
+    H5Eset_auto2(H5E_DEFAULT, nullptr, nullptr);
+    hid_t file = H5Fopen(h5_path.c_str(), H5F_ACC_RDONLY, H5P_DEFAULT);
+    if (file < 0) throw io::RunFileError("cannot open run file '" + h5_path + "'");
+    if (H5Lexists(file, "/bodies", H5P_DEFAULT) > 0) {
+      hid_t bodies = H5Gopen2(file, "/bodies", H5P_DEFAULT);
+      std::vector<std::string> names;
+      H5Literate(bodies, H5_INDEX_NAME, H5_ITER_INC, nullptr, collect_name, &names);
+      for (const auto& name : names) {
+        hid_t group = H5Gopen2(bodies, name.c_str(), H5P_DEFAULT);
+        BodyTrack t;
+        t.name = name;
+        const std::string mass = read_text_attribute(group, "mass");
+        t.mass = mass.empty() ? 0.0 : std::stod(mass);
+        H5Gclose(group);
+        tracks.push_back(std::move(t));
+      }
+      H5Gclose(bodies);
+    }
+    H5Fclose(file);
+  }
+  if (tracks.empty()) return tracks;
+  const io::RunFileReader run(h5_path);
+  for (auto& t : tracks) {
+    const std::string group = "/bodies/" + t.name + "/";
+    t.dim = run.dim();
+    if (!run.has(group + "time")) continue;  // a run stopped before its first step
+    t.time = run.read_doubles(group + "time");
+    t.position = run.read_doubles(group + "position");
+    t.angle = run.read_doubles(group + "angle");
+    t.force_fluid = run.read_doubles(group + "force_fluid");
+    t.force_contact = run.read_doubles(group + "force_contact");
+    const std::size_t n = t.time.size();
+    if (t.position.size() != 3 * n || t.angle.size() != n || t.force_fluid.size() != 3 * n ||
+        t.force_contact.size() != 3 * n)
+      throw io::RunFileError(h5_path + ": the datasets of " + group + " differ in length");
+  }
+  return tracks;
+}
+
+void write_body_csv(const BodyTrack& track, const std::string& path) {
+  std::FILE* out = std::fopen(path.c_str(), "w");
+  if (!out) throw io::OutputError("cannot write '" + path + "'");
+  std::fprintf(out,
+               "time,x,y,z,angle,fluid_fx,fluid_fy,fluid_fz,contact_fx,contact_fy,contact_fz\n");
+  for (std::size_t k = 0; k < track.rows(); ++k) {
+    const double* p = &track.position[3 * k];
+    const double* f = &track.force_fluid[3 * k];
+    const double* c = &track.force_contact[3 * k];
+    std::fprintf(out, "%.9g,%.9g,%.9g,%.9g,%.9g,%.9g,%.9g,%.9g,%.9g,%.9g,%.9g\n", track.time[k],
+                 p[0], p[1], p[2], track.angle[k], f[0], f[1], f[2], c[0], c[1], c[2]);
+  }
+  const bool failed = std::ferror(out) != 0;
+  if (std::fclose(out) != 0 || failed) throw io::OutputError("cannot write '" + path + "'");
+}
+
+void store_body_summary(const std::string& h5_path, const std::string& body, const BodySummary& s) {
+  H5Eset_auto2(H5E_DEFAULT, nullptr, nullptr);
+  hid_t file = H5Fopen(h5_path.c_str(), H5F_ACC_RDWR, H5P_DEFAULT);
+  if (file < 0) throw io::OutputError("cannot open '" + h5_path + "' to store the body summary");
+  const std::string path = "/bodies/" + body;
+  hid_t group = H5Gopen2(file, path.c_str(), H5P_DEFAULT);
+  if (group < 0) {
+    H5Fclose(file);
+    throw io::OutputError(h5_path + ": no group " + path);
+  }
+  const std::string where = h5_path + ":" + path;
+  try {
+    const std::pair<const char*, double> scalars[] = {
+        {"weight", s.weight},
+        {"arrival_time", s.arrival_time},
+        {"leave_time", s.leave_time},
+        {"peak_force_horizontal", s.peak_force_horizontal},
+        {"peak_force_horizontal_time", s.peak_force_horizontal_time},
+        {"peak_force_vertical", s.peak_force_vertical},
+        {"peak_force_vertical_time", s.peak_force_vertical_time},
+        {"peak_angle", s.peak_angle},
+        {"peak_angle_time", s.peak_angle_time}};
+    for (const auto& [name, value] : scalars) write_double_attribute(group, name, &value, 1, where);
+    write_double_attribute(group, "final_displacement", s.displacement.data(), 3, where);
+  } catch (...) {
+    H5Gclose(group);
+    H5Fclose(file);
+    throw;
+  }
+  H5Gclose(group);
+  if (H5Fclose(file) < 0) throw io::OutputError("cannot close '" + h5_path + "'");
+}
+
+std::string format_body_summary(const BodyTrack& track, const BodySummary& s) {
+  const char* unit = track.dim == 2 ? "N/m" : "N";
+  std::ostringstream o;
+  char b[256];
+  o << track.name << ": wave arrives " << when(s.arrival_time) << ", leaves its support "
+    << when(s.leave_time) << "; peak fluid force";
+  std::snprintf(b, sizeof b, " horizontal %.4g %s (%s), vertical %.4g %s (%s); weight %.4g %s",
+                s.peak_force_horizontal, unit, when(s.peak_force_horizontal_time).c_str(),
+                s.peak_force_vertical, unit, when(s.peak_force_vertical_time).c_str(), s.weight,
+                unit);
+  o << b;
+  std::snprintf(b, sizeof b, "; displacement (%.4f, %.4f, %.4f) m; peak rotation %.2f deg (%s)",
+                s.displacement[0], s.displacement[1], s.displacement[2],
+                s.peak_angle * 180.0 / M_PI, when(s.peak_angle_time).c_str());
+  o << b;
+  return o.str();
+}
+
+std::vector<BodyReport> report_bodies(const std::string& h5_path, const std::string& out_dir,
+                                      const Vec3& gravity, std::FILE* log) {
+  std::vector<BodyReport> reports;
+  for (const BodyTrack& track : read_body_tracks(h5_path)) {
+    BodyReport r;
+    r.name = track.name;
+    r.csv_path = (std::filesystem::path(out_dir) / (track.name + ".csv")).string();
+    r.summary = summarize_body(track, gravity);
+    write_body_csv(track, r.csv_path);
+    store_body_summary(h5_path, track.name, r.summary);
+    if (log) std::fprintf(log, "%s\n", format_body_summary(track, r.summary).c_str());
+    reports.push_back(std::move(r));
+  }
+  return reports;
+}
+
+}  // namespace washout::cli
