@@ -76,6 +76,8 @@ void print_summary(std::FILE* out, const Simulation& sim, const RunSummary& s) {
   std::fprintf(out, "  pressure solve: %.1f iterations per step (%s)\n", s.mean_ppe_iterations,
                sim.params().solver.c_str());
   std::fprintf(out, "  fluid particles found inside walls: %ld\n", s.wall_crossings);
+  if (s.gap_relocations > 0)
+    std::fprintf(out, "  of those, moved out of a closing gap: %ld\n", s.gap_relocations);
   if (!s.output_path.empty())
     std::fprintf(out, "  output: %s (%zu frames, last at t = %.4f s)\n", s.output_path.c_str(),
                  s.frames, s.last_frame_time);

@@ -15,8 +15,8 @@ void compute_summation_density(const SphContext& ctx, const NeighborList& list, 
 
 // Free surface: <rho>_i < threshold * rho0, or no fluid neighbour, takes P = 0. Returns the
 // count (free_surface.cpp).
-std::size_t detect_free_surface(const SphContext& ctx, const NeighborList& list,
-                                const Particles& p, double threshold, FluidWork& work);
+std::size_t detect_free_surface(const SphContext& ctx, const NeighborList& list, const Particles& p,
+                                double threshold, FluidWork& work);
 
 // Smagorinsky sub-particle-scale eddy viscosity nu_t = (C_s d0)^2 |S| (turbulence_smagorinsky.cpp).
 void compute_eddy_viscosity(const SphContext& ctx, const NeighborList& list, const Particles& p,
@@ -62,8 +62,9 @@ inline double wall_pressure_jump(const SphContext& ctx, const Particles& p, cons
       rn += r * n;
     }
     // Only where i lies in front of w's face (r . n < 0): beside a convex corner the fluid sees
-    // the other face's particles, whose normal motion is not its own.
-    return ctx.rho0 * (rn < 0.0 ? gr - an * rn : gr);
+    // the other face's particles, whose normal motion is not its own. A squeeze film does not
+    // follow the body that closes it (squeeze_film.hpp).
+    return ctx.rho0 * (rn < 0.0 && !work.in_film(i) ? gr - an * rn : gr);
   }
   double un = 0.0, rn = 0.0, gr = 0.0, gn = 0.0;
   for (int a = 0; a < ctx.dim; ++a) {

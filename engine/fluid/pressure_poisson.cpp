@@ -1,6 +1,7 @@
 // Step 2 of METHOD.md, the stabilized pressure Poisson equation (Asai et al. 2012):
 //   <lap P>_i = (rho0/dt) <div u*>_i + alpha (rho0 - <rho>_i) / dt^2
-// Unknowns are the fluid particles that are not on the free surface (those take P = 0).
+// Unknowns are the fluid particles that are not on the free surface (those take P = 0) nor in a
+// squeeze film (those take work.film_pressure, squeeze_film.hpp).
 // With the laplacian written as <lap P>_i = -sum_j c_ij (P_i - P_j), c_ij >= 0, every row reads
 //   sum_j c_ij (P_i - P_j) = -b_i,
 // a symmetric positive definite system when particle volumes are equal.
@@ -38,12 +39,13 @@ PpeStatistics assemble_pressure_poisson(const SphContext& ctx, const NeighborLis
   work.unknown.assign(n, -1);
   std::size_t rows = 0;
   for (std::size_t i = 0; i < n; ++i)
-    if (!work.free_surface[i]) work.unknown[i] = static_cast<std::int32_t>(rows++);
+    if (!work.free_surface[i] && !work.in_film(i))
+      work.unknown[i] = static_cast<std::int32_t>(rows++);
 
   CsrMatrix& A = work.matrix;
   A.rows = rows;
   A.row_start.assign(rows + 1, 0);
-  std::vector<std::uint8_t> touches_surface(rows, 0);
+  std::vector<std::uint8_t> touches_surface(rows, 0), touches_film(rows, 0);
 #pragma omp parallel for schedule(static)
   for (std::size_t i = 0; i < n; ++i) {
     const std::int32_t row = work.unknown[i];
@@ -52,7 +54,8 @@ PpeStatistics assemble_pressure_poisson(const SphContext& ctx, const NeighborLis
     for (std::uint64_t k = list.offset[i]; k < list.offset[i + 1]; ++k) {
       const std::size_t j = list.index[k];
       if (j < n && work.unknown[j] >= 0) ++count;
-      if (j < n && work.unknown[j] < 0) touches_surface[row] = 1;
+      if (j < n && work.free_surface[j]) touches_surface[row] = 1;
+      if (j < n && work.in_film(j)) touches_film[row] = 1;
     }
     A.row_start[row + 1] = count;
   }
@@ -81,6 +84,8 @@ PpeStatistics assemble_pressure_poisson(const SphContext& ctx, const NeighborLis
         if (work.unknown[j] >= 0) {
           A.column[slot] = work.unknown[j];
           A.value[slot++] = -c;
+        } else if (work.in_film(j)) {
+          wall_term += c * work.film_pressure[j];  // a known pressure, as P = 0 at the surface
         }
         // Difference-form divergence: sum_j V (u*_j - u*_i) . grad W_ij
         const double f = g_scale * ctx.kernel.derivative_over_r(r);
@@ -126,7 +131,8 @@ PpeStatistics assemble_pressure_poisson(const SphContext& ctx, const NeighborLis
       components.unite(static_cast<std::int32_t>(r), A.column[k]);
   std::vector<std::uint8_t> anchored(rows, 0);
   for (std::size_t r = 0; r < rows; ++r)
-    if (touches_surface[r]) anchored[components.find(static_cast<std::int32_t>(r))] = 1;
+    if (touches_surface[r] || touches_film[r])
+      anchored[components.find(static_cast<std::int32_t>(r))] = 1;
   std::vector<double> rhs_sum(rows, 0.0);
   std::vector<std::int64_t> size(rows, 0);
   for (std::size_t r = 0; r < rows; ++r) {
@@ -156,7 +162,9 @@ void gather_pressure_guess(const Particles& p, FluidWork& work) {
 void scatter_pressure(const FluidWork& work, Particles& p) {
 #pragma omp parallel for schedule(static)
   for (std::size_t i = 0; i < p.fluid_count; ++i)
-    p.pressure[i] = work.unknown[i] >= 0 ? work.solution[work.unknown[i]] : 0.0;
+    p.pressure[i] = work.unknown[i] >= 0 ? work.solution[work.unknown[i]]
+                    : work.in_film(i)    ? work.film_pressure[i]
+                                         : 0.0;
 }
 
 }  // namespace washout

@@ -207,7 +207,16 @@ Vec3 RigidBodySystem::reference_point(std::size_t b, const Vec3& x) const {
 }
 
 bool RigidBodySystem::contains(std::size_t b, const Vec3& x) const {
-  return shapes_[b].signed_distance(reference_point(b, x), dim_) < 0.0;
+  return signed_distance(b, x) < 0.0;
+}
+
+double RigidBodySystem::signed_distance(std::size_t b, const Vec3& x) const {
+  return shapes_[b].signed_distance(reference_point(b, x), dim_);
+}
+
+Vec3 RigidBodySystem::velocity_at(std::size_t b, const Vec3& x) const {
+  const rigid::BodyState& s = states_[b];
+  return s.velocity + s.angular_velocity.cross(x - s.position);
 }
 
 bool RigidBodySystem::push_out(std::size_t b, Vec3& x, Vec3& u, double clearance) const {
@@ -218,7 +227,7 @@ bool RigidBodySystem::push_out(std::size_t b, Vec3& x, Vec3& u, double clearance
   const Vec3 normal_ref = shapes_[b].normal(reference, dim_, 1e-3 * clearance);
   const Vec3 normal = s.orientation * normal_ref;
   x += (clearance - distance) * normal;
-  const Vec3 u_body = s.velocity + s.angular_velocity.cross(x - s.position);
+  const Vec3 u_body = velocity_at(b, x);
   const double inward = (u - u_body).dot(normal);
   if (inward < 0.0) u -= inward * normal;
   return true;

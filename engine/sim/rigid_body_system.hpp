@@ -66,6 +66,10 @@ class RigidBodySystem {
   long advance(double t, double dt, const Vec3& gravity, Particles& p);
   // Whether x lies inside body b's shape in its current pose.
   bool contains(std::size_t b, const Vec3& x) const;
+  // Signed distance of world point x from body b's surface (negative inside).
+  double signed_distance(std::size_t b, const Vec3& x) const;
+  // Velocity of body b's material point at world point x.
+  Vec3 velocity_at(std::size_t b, const Vec3& x) const;
   // A point x inside body b moves out along the surface normal to `clearance` outside it, and a
   // velocity u at it loses any part that would take it back in (relative to the body). Returns
   // false (and changes nothing) if x is outside.

@@ -139,6 +139,7 @@ RunSummary Simulation::run(const std::string& output_path,
       std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   summary.mean_ppe_iterations = step_ > 0 ? double(total_ppe_iterations_) / step_ : 0.0;
   summary.wall_crossings = wall_crossings_;
+  summary.gap_relocations = gap_relocations_;
   summary.stage_seconds = timer_.totals();
   for (auto* o : observers) o->on_finish(*this, summary);
   return summary;

@@ -8,11 +8,13 @@
 #include <limits>
 #include <sstream>
 
+#include "engine/boundary/squeeze_film.hpp"
 #include "engine/boundary/virtual_markers.hpp"
 #include "engine/boundary/wall_acceleration.hpp"
 #include "engine/fluid/fluid_interpolation.hpp"
 #include "engine/fluid/isph_stages.hpp"
 #include "engine/io/run_file_writer.hpp"
+#include "engine/sim/free_spot.hpp"
 #include "engine/sim/particle_builder.hpp"
 #include "engine/sim/rigid_body_system.hpp"
 
@@ -162,6 +164,10 @@ StepReport Simulation::step_until(double until) {
     auto s = timer_.measure("wall_markers");
     mark_active_boundary(neighbors_, particles_, active_boundary_);
     update_marker_velocities(ctx_, grid_, particles_, active_boundary_, work_);
+    if (bodies_ && work_.dynamic_wall) {
+      report.squeeze_film_particles = mark_squeeze_film(ctx_, neighbors_, particles_, work_);
+      set_film_pressure(ctx_, neighbors_, particles_, prm.gravity, work_);
+    }
   }
   if (prm.turbulence == "smagorinsky") {
     auto s = timer_.measure("turbulence");
@@ -318,6 +324,7 @@ void Simulation::check_health(StepReport& report) {
   }
   // Fluid inside a wall: only particles that see a boundary particle can be there.
   std::size_t inside = 0, new_crossings = 0;
+  trapped_.assign(n, 0);
 #pragma omp parallel for reduction(+ : inside, new_crossings) schedule(dynamic, 512)
   for (std::size_t i = 0; i < n; ++i) {
     bool sees_wall = false;
@@ -353,11 +360,14 @@ void Simulation::check_health(StepReport& report) {
         tested = b;
         in_wall = bodies_->push_out(static_cast<std::size_t>(b), x, u, clearance);
       }
-      if (in_wall)
+      if (in_wall) {
         for (int a = 0; a < dim; ++a) {
           particles_.position[a][i] = x[a];
           particles_.velocity[a][i] = u[a];
         }
+        // Out of one solid and into another: caught in a closing gap.
+        trapped_[i] = distance_to_solids(x) < 0.0;
+      }
     }
     if (in_wall) {
       ++inside;
@@ -367,6 +377,77 @@ void Simulation::check_health(StepReport& report) {
   }
   report.particles_in_walls = inside;
   wall_crossings_ += static_cast<long>(new_crossings);
+  for (std::size_t i = 0; i < n; ++i)
+    if (trapped_[i]) move_out_of_gap(i);
+}
+
+double Simulation::distance_to_solids(const Vec3& x) const {
+  const int dim = particles_.dim;
+  double distance = std::numeric_limits<double>::max();
+  for (std::size_t w = 0; w < model_.walls.size(); ++w) {
+    Vec3 shift = Vec3::Zero();
+    for (const auto& mw : moving_walls_)
+      if (mw.wall_index == w) shift = mw.displacement;
+    distance = std::min(distance, model_.walls[w].shape.signed_distance(x - shift, dim));
+  }
+  for (std::size_t b = 0; bodies_ && b < bodies_->size(); ++b)
+    distance = std::min(distance, bodies_->signed_distance(b, x));
+  return distance;
+}
+
+void Simulation::move_out_of_gap(std::size_t i) {
+  const int dim = particles_.dim;
+  const double d0 = ctx_.d0;
+  auto inside_domain = [&](const Vec3& y) {
+    for (int a = 0; a < dim; ++a)
+      if (y[a] < domain_lower_[a] || y[a] > domain_upper_[a]) return false;
+    return true;
+  };
+  // A free place must also have fluid within the kernel support: the far side of a wall (as
+  // thick as the support) is clear of solids too, but out of the fluid's reach.
+  auto clear_of_solids = [&](const Vec3& y) {
+    if (!inside_domain(y) || distance_to_solids(y) < 0.5 * d0) return false;
+    const double point[3] = {y[0], y[1], y[2]};
+    int wet = 0;
+    grid_.for_each_candidate(point, [&](std::uint32_t f) {
+      if (f < particles_.fluid_count && f != i &&
+          (particles_.x(f) - y).squaredNorm() < 4.0 * ctx_.h * ctx_.h)
+        ++wet;
+    });
+    return wet >= 3;
+  };
+  // Prefer a hole in the fluid (no particle within d0/2); next to the gap the fluid is usually
+  // packed, so settle for any place clear of the solids within the same search radius.
+  auto clear_of_fluid = [&](const Vec3& y) {
+    if (!clear_of_solids(y)) return false;
+    const double point[3] = {y[0], y[1], y[2]};
+    bool crowded = false;
+    grid_.for_each_candidate(point, [&](std::uint32_t f) {
+      if (crowded || f >= particles_.fluid_count || f == i) return;
+      crowded = (particles_.x(f) - y).squaredNorm() < 0.25 * d0 * d0;
+    });
+    return !crowded;
+  };
+  const int rings = 40;  // a search radius of 20 d0: wider than the gaps bodies close
+  std::optional<Vec3> spot = find_free_spot(particles_.x(i), dim, d0, rings, clear_of_fluid);
+  if (!spot) spot = find_free_spot(particles_.x(i), dim, d0, rings, clear_of_solids);
+  if (!spot) return;  // left where it is, still counted as inside a wall
+  // It takes the velocity of the fluid around its new place (kernel-weighted).
+  const double point[3] = {spot->x(), spot->y(), spot->z()};
+  Vec3 sum = Vec3::Zero();
+  double weight = 0.0;
+  grid_.for_each_candidate(point, [&](std::uint32_t f) {
+    if (f >= particles_.fluid_count || f == i || trapped_[f]) return;
+    const double w = ctx_.kernel.value((particles_.x(f) - *spot).norm());
+    sum += w * particles_.u(f);
+    weight += w;
+  });
+  const Vec3 u = weight > 0.0 ? Vec3(sum / weight) : Vec3::Zero();
+  for (int a = 0; a < dim; ++a) {
+    particles_.position[a][i] = (*spot)[a];
+    particles_.velocity[a][i] = u[a];
+  }
+  ++gap_relocations_;
 }
 
 void Simulation::evaluate_probes() {

@@ -54,6 +54,7 @@ struct StepReport {
   double max_speed = 0.0;
   double kinetic_energy = 0.0;
   std::size_t particles_in_walls = 0;
+  std::size_t squeeze_film_particles = 0;  // fluid in gaps narrower than 2 d0 at a body
   long substeps = 0;          // rigid-body sub-steps in this step (0: the scene has no bodies)
   double wall_seconds = 0.0;  // cumulative
 };
@@ -70,7 +71,8 @@ struct RunSummary {
   double wall_seconds = 0.0;
   std::size_t fluid_particles = 0, boundary_particles = 0;
   double mean_ppe_iterations = 0.0;
-  long wall_crossings = 0;  // fluid particles found inside a wall, summed over steps
+  long wall_crossings = 0;   // fluid particles found inside a wall, summed over steps
+  long gap_relocations = 0;  // of those, moved out of a closing gap (free_spot.hpp)
   std::string output_path;
   std::vector<std::pair<std::string, double>> stage_seconds;
 };
@@ -120,6 +122,10 @@ class Simulation {
  private:
   double choose_time_step(double until) const;
   void check_health(StepReport& report);
+  // Signed distance of x from the nearest wall or body (negative inside one).
+  double distance_to_solids(const Vec3& x) const;
+  // Moves fluid particle i, caught in a closing gap, to the nearest free place (free_spot.hpp).
+  void move_out_of_gap(std::size_t i);
   void evaluate_probes();
   void write_frame(io::RunFileWriter& writer);
   void flush_series(io::RunFileWriter& writer);
@@ -137,6 +143,7 @@ class Simulation {
   std::unique_ptr<RigidBodySystem> bodies_;
   std::vector<std::uint8_t> active_boundary_;
   std::vector<std::uint8_t> inside_wall_;
+  std::vector<std::uint8_t> trapped_;  // fluid caught in a closing gap this step
   std::vector<double> shift_scratch_;
   StageTimer timer_;
   double time_ = 0.0;
@@ -145,6 +152,7 @@ class Simulation {
   double max_speed_limit_ = 0.0;
   Vec3 domain_lower_, domain_upper_;
   long wall_crossings_ = 0;
+  long gap_relocations_ = 0;
   long total_ppe_iterations_ = 0;
   std::vector<double> probe_values_;
   StepReport last_report_;

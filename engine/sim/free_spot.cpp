@@ -1,0 +1,35 @@
+#include "engine/sim/free_spot.hpp"
+
+#include <cmath>
+#include <numbers>
+
+namespace washout {
+
+std::optional<Vec3> find_free_spot(const Vec3& x, int dim, double d0, int max_rings,
+                                   const std::function<bool(const Vec3&)>& is_free) {
+  const double golden_angle = std::numbers::pi * (3.0 - std::sqrt(5.0));
+  for (int k = 1; k <= max_rings; ++k) {
+    const double radius = 0.5 * d0 * k;
+    // About one point per d0/2 of circumference (per (d0/2)^2 of sphere area).
+    const double ratio = radius / (0.5 * d0);
+    const int points = dim == 2
+                           ? static_cast<int>(std::ceil(2.0 * std::numbers::pi * ratio))
+                           : static_cast<int>(std::ceil(4.0 * std::numbers::pi * ratio * ratio));
+    for (int m = 0; m < points; ++m) {
+      Vec3 direction;
+      if (dim == 2) {
+        const double angle = 2.0 * std::numbers::pi * (m + 0.5) / points;
+        direction = Vec3(std::cos(angle), std::sin(angle), 0.0);
+      } else {
+        const double z = 1.0 - 2.0 * (m + 0.5) / points;
+        const double s = std::sqrt(std::max(0.0, 1.0 - z * z));
+        direction = Vec3(s * std::cos(golden_angle * m), s * std::sin(golden_angle * m), z);
+      }
+      const Vec3 y = x + radius * direction;
+      if (is_free(y)) return y;
+    }
+  }
+  return std::nullopt;
+}
+
+}  // namespace washout
