@@ -12,9 +12,8 @@ local flume = require("flume")
 local P = washout.parameters {
   dim = 2,
   d0 = 0.01,              -- [assumption] default: well under a minute on two cores; paper: 0.005
-  end_time = 1.0,         -- the girder is off the pier by 0.61-0.75 s. Longer runs land it on
-                          -- the floor, which the engine cannot yet resolve: at 0.30 m the run
-                          -- stops as unstable at 1.07 s (docs/girder_washout.md, Limitations)
+  end_time = 2.0,         -- off the pier by 0.61-0.73 s, then carried 1.5-2 m down the channel;
+                          -- the run stops early if the girder leaves the observation window
   output_interval = 0.02,
   wall_slip = flume.wall_slip,  -- [paper] 65 % slip
   scene = flume.defaults(),
