@@ -16,32 +16,6 @@ Vec3 row3(const std::vector<double>& v, std::size_t k) {
   return Vec3(v[3 * k], v[3 * k + 1], v[3 * k + 2]);
 }
 
-herr_t collect_name(hid_t, const char* name, const H5L_info_t*, void* data) {
-  static_cast<std::vector<std::string>*>(data)->push_back(name);
-  return 0;
-}
-
-// The text attribute `name` of an object (the body's "mass" is written as text).
-std::string read_text_attribute(hid_t object, const char* name) {
-  if (H5Aexists(object, name) <= 0) return "";
-  hid_t attr = H5Aopen(object, name, H5P_DEFAULT);
-  hid_t type = H5Aget_type(attr);
-  std::string value;
-  if (H5Tget_class(type) == H5T_STRING) {
-    value.assign(H5Tget_size(type), '\0');
-    hid_t memory = H5Tcopy(H5T_C_S1);
-    H5Tset_size(memory, value.size());
-    H5Tset_strpad(memory, H5T_STR_NULLPAD);
-    H5Tset_cset(memory, H5Tget_cset(type));  // the writer stores UTF-8; no conversion
-    H5Aread(attr, memory, value.data());
-    H5Tclose(memory);
-    while (!value.empty() && value.back() == '\0') value.pop_back();
-  }
-  H5Tclose(type);
-  H5Aclose(attr);
-  return value;
-}
-
 void write_double_attribute(hid_t object, const std::string& name, const double* values,
                             hsize_t count, const std::string& where) {
   if (H5Aexists(object, name.c_str()) > 0) H5Adelete(object, name.c_str());
@@ -119,43 +93,25 @@ BodySummary summarize_body(const BodyTrack& track, const Vec3& gravity,
 
 std::vector<BodyTrack> read_body_tracks(const std::string& h5_path) {
   std::vector<BodyTrack> tracks;
-  {
-    // Body names and masses (group attributes, which RunFileReader does not read).
-    H5Eset_auto2(H5E_DEFAULT, nullptr, nullptr);
-    hid_t file = H5Fopen(h5_path.c_str(), H5F_ACC_RDONLY, H5P_DEFAULT);
-    if (file < 0) throw io::RunFileError("cannot open run file '" + h5_path + "'");
-    if (H5Lexists(file, "/bodies", H5P_DEFAULT) > 0) {
-      hid_t bodies = H5Gopen2(file, "/bodies", H5P_DEFAULT);
-      std::vector<std::string> names;
-      H5Literate(bodies, H5_INDEX_NAME, H5_ITER_INC, nullptr, collect_name, &names);
-      for (const auto& name : names) {
-        hid_t group = H5Gopen2(bodies, name.c_str(), H5P_DEFAULT);
-        BodyTrack t;
-        t.name = name;
-        const std::string mass = read_text_attribute(group, "mass");
-        t.mass = mass.empty() ? 0.0 : std::stod(mass);
-        H5Gclose(group);
-        tracks.push_back(std::move(t));
-      }
-      H5Gclose(bodies);
-    }
-    H5Fclose(file);
-  }
-  if (tracks.empty()) return tracks;
   const io::RunFileReader run(h5_path);
-  for (auto& t : tracks) {
-    const std::string group = "/bodies/" + t.name + "/";
+  for (const std::string& name : run.children("/bodies")) {
+    BodyTrack t;
+    t.name = name;
     t.dim = run.dim();
-    if (!run.has(group + "time")) continue;  // a run stopped before its first step
-    t.time = run.read_doubles(group + "time");
-    t.position = run.read_doubles(group + "position");
-    t.angle = run.read_doubles(group + "angle");
-    t.force_fluid = run.read_doubles(group + "force_fluid");
-    t.force_contact = run.read_doubles(group + "force_contact");
-    const std::size_t n = t.time.size();
-    if (t.position.size() != 3 * n || t.angle.size() != n || t.force_fluid.size() != 3 * n ||
-        t.force_contact.size() != 3 * n)
-      throw io::RunFileError(h5_path + ": the datasets of " + group + " differ in length");
+    const std::string group = "/bodies/" + name;
+    t.mass = run.has_attribute(group, "mass") ? std::stod(run.string_attribute("mass", group)) : 0.0;
+    if (run.has(group + "/time")) {  // not when the run stopped before its first step
+      t.time = run.read_doubles(group + "/time");
+      t.position = run.read_doubles(group + "/position");
+      t.angle = run.read_doubles(group + "/angle");
+      t.force_fluid = run.read_doubles(group + "/force_fluid");
+      t.force_contact = run.read_doubles(group + "/force_contact");
+      const std::size_t n = t.time.size();
+      if (t.position.size() != 3 * n || t.angle.size() != n || t.force_fluid.size() != 3 * n ||
+          t.force_contact.size() != 3 * n)
+        throw io::RunFileError(h5_path + ": the datasets of " + group + " differ in length");
+    }
+    tracks.push_back(std::move(t));
   }
   return tracks;
 }

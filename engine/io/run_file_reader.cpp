@@ -121,15 +121,34 @@ FrameData RunFileReader::read_frame(std::size_t index) const {
 
 bool RunFileReader::has(const std::string& object_path) const { return exists(file_, object_path); }
 
-std::string RunFileReader::string_attribute(const std::string& name) const {
-  if (H5Aexists(file_, name.c_str()) <= 0) throw RunFileError(path_ + ": missing attribute " + name);
-  hid_t attr = H5Aopen(file_, name.c_str(), H5P_DEFAULT);
+bool RunFileReader::has_attribute(const std::string& object, const std::string& name) const {
+  return exists(file_, object) && H5Aexists_by_name(file_, object.c_str(), name.c_str(),
+                                                    H5P_DEFAULT) > 0;
+}
+
+std::vector<std::string> RunFileReader::children(const std::string& group) const {
+  std::vector<std::string> names;
+  if (!exists(file_, group)) return names;
+  hid_t g = H5Gopen2(file_, group.c_str(), H5P_DEFAULT);
+  if (g < 0) return names;
+  H5Literate(g, H5_INDEX_NAME, H5_ITER_INC, nullptr, collect_name, &names);
+  H5Gclose(g);
+  std::sort(names.begin(), names.end());
+  return names;
+}
+
+std::string RunFileReader::string_attribute(const std::string& name,
+                                            const std::string& object) const {
+  if (!has_attribute(object, name))
+    throw RunFileError(path_ + ": missing attribute " + object + " " + name);
+  hid_t attr = H5Aopen_by_name(file_, object.c_str(), name.c_str(), H5P_DEFAULT, H5P_DEFAULT);
   hid_t type = H5Aget_type(attr);
   const std::size_t size = H5Tget_size(type);
   std::string value(size, '\0');
   hid_t memory_type = H5Tcopy(H5T_C_S1);
   H5Tset_size(memory_type, size);
   H5Tset_strpad(memory_type, H5T_STR_NULLPAD);
+  H5Tset_cset(memory_type, H5Tget_cset(type));  // as stored (the writer uses UTF-8): no conversion
   H5Aread(attr, memory_type, value.data());
   H5Tclose(memory_type);
   H5Tclose(type);

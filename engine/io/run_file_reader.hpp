@@ -47,7 +47,11 @@ class RunFileReader {
   FrameData read_frame(std::size_t index) const;  // throws if index >= frame_count()
 
   bool has(const std::string& object_path) const;  // e.g. "/bodies/girder"
-  std::string string_attribute(const std::string& name) const;  // root attribute
+  // A text attribute of an object (the root by default); throws if it is missing.
+  std::string string_attribute(const std::string& name, const std::string& object = "/") const;
+  bool has_attribute(const std::string& object, const std::string& name) const;
+  // The names of a group's members, sorted (empty if the group does not exist).
+  std::vector<std::string> children(const std::string& group) const;
   double double_attribute(const std::string& name) const;       // root attribute
   // A whole dataset as doubles, flattened row-major, e.g. "/stats/time", "/bodies/g/position".
   std::vector<double> read_doubles(const std::string& dataset_path) const;
