@@ -4,13 +4,13 @@
 // layer of particles, which cannot resolve the film's flow: imposing the body's approach on that
 // layer asks the pressure to throw it out sideways at V B / (2 gap), a speed that grows without
 // bound as the gap closes (measured: the last layer under a sinking box left at over 25 m/s, and
-// the box hovered and bounced on it). The film particles' pressure equations lose their source
-// (no divergence, no density error) and see the body as a resting wall (no acceleration in the
-// wall jump): their pressure is the smooth continuation of the resolved fluid's around them, so
-// the film passes the surrounding pressure on to the body (buoyancy is kept) but neither holds
-// the body up nor is thrown out; the DEM contact stops the body. (A film pressure lagged from
-// the last step, tried first, flipped sign from step to step once the body rested.) What is
-// left of the layer when the gap closes below d0 is moved out of it (free_spot.hpp).
+// the box hovered and bounced on it). The film particles leave the PPE's unknowns: each takes
+// the pressure of the resolved fluid beside it, continued hydrostatically (set_film_pressure,
+// last step's values, entered as a known value like P = 0 at the free surface), and its wall
+// jump carries no acceleration. The film passes the surrounding pressure on to the body but
+// neither holds it up nor is thrown out; the DEM contact stops the body. (Film particles kept
+// in the PPE with no source threw the water at the gap's mouth out at 26 m/s on landing.)
+// What is left of the layer when the gap closes below d0 is moved out of it (free_spot.hpp).
 #include <cstddef>
 
 #include "engine/core/neighbor_grid.hpp"
