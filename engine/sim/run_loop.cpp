@@ -27,6 +27,8 @@ void Simulation::flush_series(io::RunFileWriter& writer) {
   writer.append("/stats/wall_seconds", series_wall_.data(), rows);
   writer.append("/stats/kinetic_energy", series_energy_.data(), rows);
   writer.append("/stats/substeps", series_substeps_.data(), rows);
+  writer.append("/stats/free_surface_particles", series_free_surface_.data(), rows);
+  writer.append("/stats/squeeze_film_particles", series_film_.data(), rows);
   const std::size_t probes = model_.probes.size();
   for (std::size_t k = 0; k < probes; ++k) {
     std::vector<double> values(rows);
@@ -36,7 +38,9 @@ void Simulation::flush_series(io::RunFileWriter& writer) {
   }
   for (auto* v : {&series_time_, &series_dt_, &series_residual_, &series_wall_, &series_energy_})
     v->clear();
-  for (auto* v : {&series_step_, &series_iterations_, &series_substeps_}) v->clear();
+  for (auto* v : {&series_step_, &series_iterations_, &series_substeps_, &series_free_surface_,
+                  &series_film_})
+    v->clear();
   probe_series_.clear();
   if (bodies_) bodies_->flush(writer);
   writer.flush();
@@ -111,6 +115,8 @@ RunSummary Simulation::run(const std::string& output_path,
     series_wall_.push_back(report.wall_seconds);
     series_energy_.push_back(report.kinetic_energy);
     series_substeps_.push_back(report.substeps);
+    series_free_surface_.push_back(static_cast<std::int64_t>(report.free_surface_particles));
+    series_film_.push_back(static_cast<std::int64_t>(report.squeeze_film_particles));
     probe_series_.insert(probe_series_.end(), probe_values_.begin(), probe_values_.end());
     if (bodies_) bodies_->record(report.time);
     {

@@ -158,7 +158,8 @@ class Simulation {
   StepReport last_report_;
   // Series buffered between frames, appended to the file at each frame.
   std::vector<double> series_time_, series_dt_, series_residual_, series_wall_, series_energy_;
-  std::vector<std::int64_t> series_step_, series_iterations_, series_substeps_;
+  std::vector<std::int64_t> series_step_, series_iterations_, series_substeps_,
+      series_free_surface_, series_film_;
   std::vector<double> probe_series_;  // rows of probe_values_
 };
 

@@ -23,7 +23,9 @@ namespace {
 //  - resting on the floor: the bottom within d0/100 of it;
 //  - the contact and fluid loads carry the weight: F_c + F_f = M g within 5 % (the fluid's
 //    noise shakes the box a little on its springs);
-//  - sub-stepped while touching: /stats/substeps above 1 at the end.
+//  - sub-stepped while touching: /stats/substeps above 1 at the end;
+//  - the squeeze film is marked only where the gap closes: no film particle before t = 0.1 s
+//    (the gap is then still over 0.03 m wide), some by the end.
 TEST(SinkingBox, LandsAndRestsOnTheFloor) {
   const double B = 0.08, H = 0.04, rho_b = 2000.0, g = 9.81;
   const double weight = rho_b * B * H * g;
@@ -35,6 +37,15 @@ TEST(SinkingBox, LandsAndRestsOnTheFloor) {
     io::RunFileReader file(outcome.h5_path);
     const testing::BodySeries box = testing::read_body_series(file, "box");
     const auto substeps = file.read_doubles("/stats/substeps");
+    // The squeeze film (docs/bodies.md, Coupling step 6): none while the gap is wide, some as
+    // the box lands.
+    const auto step_time = file.read_doubles("/stats/time");
+    const auto film = file.read_doubles("/stats/squeeze_film_particles");
+    double film_early = 0, film_most = 0;
+    for (std::size_t r = 0; r < film.size(); ++r) {
+      if (step_time[r] < 0.1) film_early = std::max(film_early, film[r]);
+      film_most = std::max(film_most, film[r]);
+    }
     double lowest = 1.0, speed = 0, balance = 0;
     int n = 0;
     for (std::size_t r = 0; r < box.time.size(); ++r) {
@@ -48,13 +59,17 @@ TEST(SinkingBox, LandsAndRestsOnTheFloor) {
     const double bottom = box.position[3 * (box.time.size() - 1) + 1] - 0.5 * H;
     std::printf(
         "d0 = %.3f m: lowest bottom %.2e m, final bottom %.2e m, speed %.1e m/s, "
-        "(F_c + F_f) / M g - 1 = %+.2f %%, sub-steps in the last step %.0f\n",
-        d0, lowest, bottom, speed, 100 * (balance / weight - 1), substeps.back());
+        "(F_c + F_f) / M g - 1 = %+.2f %%, sub-steps in the last step %.0f, squeeze-film "
+        "particles: %.0f before t = 0.1 s, at most %.0f\n",
+        d0, lowest, bottom, speed, 100 * (balance / weight - 1), substeps.back(), film_early,
+        film_most);
     EXPECT_GT(lowest, -0.01 * d0);
     EXPECT_LT(std::abs(bottom), 0.01 * d0);
     EXPECT_LT(speed, 5e-3);
     EXPECT_LT(std::abs(balance / weight - 1), 0.05);
     EXPECT_GT(substeps.back(), 1.0);
+    EXPECT_EQ(film_early, 0.0);
+    EXPECT_GT(film_most, 0.0);
   }
 }
 
