@@ -338,9 +338,9 @@ void Simulation::check_health(StepReport& report) {
       Vec3 x = particles_.x(i), u = particles_.u(i);
       const double clearance = 0.5 * ctx_.d0;
       for (std::size_t w = 0; w < model_.walls.size() && !in_wall; ++w) {
-        Vec3 shift = Vec3::Zero(), wall_velocity = Vec3::Zero();
-        for (const auto& mw : moving_walls_)
-          if (mw.wall_index == w) shift = mw.displacement, wall_velocity = mw.velocity;
+        const MovingWall* motion = motion_of_wall(w);
+        const Vec3 shift = motion ? motion->displacement : Vec3::Zero();
+        const Vec3 wall_velocity = motion ? motion->velocity : Vec3::Zero();
         const Shape& shape = model_.walls[w].shape;
         const double distance = shape.signed_distance(x - shift, dim);
         in_wall = distance < 0.0;
@@ -381,13 +381,18 @@ void Simulation::check_health(StepReport& report) {
     if (trapped_[i]) move_out_of_gap(i);
 }
 
+const MovingWall* Simulation::motion_of_wall(std::size_t w) const {
+  for (const auto& wall : moving_walls_)
+    if (wall.wall_index == w) return &wall;
+  return nullptr;
+}
+
 double Simulation::distance_to_solids(const Vec3& x) const {
   const int dim = particles_.dim;
   double distance = std::numeric_limits<double>::max();
   for (std::size_t w = 0; w < model_.walls.size(); ++w) {
-    Vec3 shift = Vec3::Zero();
-    for (const auto& mw : moving_walls_)
-      if (mw.wall_index == w) shift = mw.displacement;
+    const MovingWall* motion = motion_of_wall(w);
+    const Vec3 shift = motion ? motion->displacement : Vec3::Zero();
     distance = std::min(distance, model_.walls[w].shape.signed_distance(x - shift, dim));
   }
   for (std::size_t b = 0; bodies_ && b < bodies_->size(); ++b)

@@ -122,6 +122,8 @@ class Simulation {
  private:
   double choose_time_step(double until) const;
   void check_health(StepReport& report);
+  // The motion of wall w if it moves, else nullptr (its shape then sits where it was built).
+  const MovingWall* motion_of_wall(std::size_t w) const;
   // Signed distance of x from the nearest wall or body (negative inside one).
   double distance_to_solids(const Vec3& x) const;
   // Moves fluid particle i, caught in a closing gap, to the nearest free place (free_spot.hpp).
