@@ -6,6 +6,7 @@
 #include <cmath>
 #include <limits>
 #include <numbers>
+#include <string>
 
 #include "render/render_error.hpp"
 
@@ -106,6 +107,13 @@ Eigen::Vector3d vec(const double v[3]) { return {v[0], v[1], v[2]}; }
 }  // namespace
 
 void validate_camera_spec(const CameraSpec& spec) {
+  if (spec.region_components != 0) {
+    if (spec.region_components != 2 && spec.region_components != 3)
+      throw RenderError("camera region needs 2 (2D) or 3 (3D) components for min and max");
+    for (int a = 0; a < spec.region_components; ++a)
+      if (!(spec.region_max[a] > spec.region_min[a]))
+        throw RenderError(std::string("camera region: max must exceed min along ") + char('x' + a));
+  }
   if (spec.explicit_pose) {
     if ((vec(spec.position) - vec(spec.target)).norm() == 0.0) {
       throw RenderError("camera position and target must differ");
@@ -124,14 +132,23 @@ void validate_camera_spec(const CameraSpec& spec) {
   }
 }
 
-Camera fit_camera(const CameraSpec& spec, int dim, const SceneBounds& bounds, double aspect) {
+Camera fit_camera(const CameraSpec& spec, int dim, const SceneBounds& particles, double aspect) {
   validate_camera_spec(spec);
+  if (spec.region_components != 0 && spec.region_components != dim)
+    throw RenderError("camera region has " + std::to_string(spec.region_components) +
+                      " components; this scene is " + std::to_string(dim) + "D");
+  SceneBounds bounds = particles;
+  if (spec.region_components != 0) {
+    bounds.lo = Eigen::Vector3d(spec.region_min[0], spec.region_min[1], 0.0);
+    bounds.hi = Eigen::Vector3d(spec.region_max[0], spec.region_max[1], 0.0);
+    if (dim == 3) bounds.lo.z() = spec.region_min[2], bounds.hi.z() = spec.region_max[2];
+  }
   if (dim == 2)
     return fit_orthographic(bounds, -Eigen::Vector3d::UnitZ(), Eigen::Vector3d::UnitY(), aspect);
   if (spec.explicit_pose) {
     const Eigen::Vector3d eye = vec(spec.position), target = vec(spec.target);
     const Basis basis = basis_for(target - eye, vec(spec.up));
-    const auto [near, far] = depth_range(bounds, eye, basis.forward);
+    const auto [near, far] = depth_range(particles, eye, basis.forward);
     return Camera::perspective(eye, target, basis.up, spec.fov_deg, aspect, near, far);
   }
   if (spec.preset == "side") {

@@ -15,6 +15,14 @@ struct CameraSpec {
   double target[3] = {0.0, 0.0, 0.0};
   double up[3] = {0.0, 0.0, 1.0};
   double fov_deg = 35.0;  // vertical field of view of perspective cameras
+  // A region to frame instead of every particle of the first frame: a zoom (on the pier, say,
+  // where the whole flume would be a thin strip): the view is fitted to this box, and what lies
+  // outside it may be cut off at the border of the drawing. region_components is 0 (no region) or
+  // the scene's dim: x, y (2D) or x, y, z (3D) of region_min and region_max. An explicit pose
+  // ignores it.
+  int region_components = 0;
+  double region_min[3] = {0.0, 0.0, 0.0};
+  double region_max[3] = {0.0, 0.0, 0.0};
 };
 
 struct RenderOptions {

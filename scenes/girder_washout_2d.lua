@@ -22,5 +22,7 @@ local P = washout.parameters {
 local f = flume.build(P)
 flume.probes(P, f)
 flume.stop_when_girder_leaves(f)
--- Frames every 0.1 s; a 2D frame shows the whole 7.5 m flume, hence the wide picture.
-washout.frames { width = 1920, height = 360, color = "speed", every = 5, range = { 0, 3 } }
+-- Frames every 0.1 s of the reservoir and the observation window (the flume beyond it is
+-- empty channel); still a wide picture, 4 m by 0.6 m.
+washout.frames { width = 1920, height = 400, color = "speed", every = 5, range = { 0, 3 },
+                 camera = { region = { min = { 0, 0 }, max = { f.window_x, P.wall_height } } } }

@@ -27,6 +27,11 @@ render::RenderOptions to_render_options(const lua::FrameRequest& r) {
     o.camera.up[a] = r.camera_up[a];
   }
   o.camera.fov_deg = r.camera_fov;
+  o.camera.region_components = r.camera_region_components;
+  for (int a = 0; a < 3; ++a) {
+    o.camera.region_min[a] = r.camera_region_min[a];
+    o.camera.region_max[a] = r.camera_region_max[a];
+  }
   return o;
 }
 

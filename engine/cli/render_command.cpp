@@ -42,6 +42,8 @@ options:
   --color FIELD        fluid colour: speed (default), pressure, vertical_velocity
   --range MIN,MAX      fixed colour range (default: from the first frame with any spread)
   --camera PRESET      3D view: perspective (default), side, top; 2D is always the x-y plane
+  --region X0,Y0,X1,Y1 fit the view to this box instead of all particles (a zoom); in 3D
+                       X0,Y0,Z0,X1,Y1,Z1
   --supersample S      render at S times the size and average down, 1 to 4 (default 2)
   --no-cutaway         3D: also draw the walls between the camera and the water
   --video              also make DIR/<run name>.mp4 with ffmpeg, if ffmpeg is installed
@@ -99,6 +101,29 @@ int parse_positive_int(const std::string& option, const std::string& text) {
   return static_cast<int>(v);
 }
 
+// --region X0,Y0,X1,Y1 (2D) or X0,Y0,Z0,X1,Y1,Z1 (3D): the box the view is fitted to.
+render::CameraSpec with_region(render::CameraSpec camera, const std::string& name,
+                               const std::string& text) {
+  std::vector<double> numbers;
+  std::size_t start = 0;
+  while (true) {
+    const std::size_t comma = text.find(',', start);
+    numbers.push_back(parse_number(name, text.substr(start, comma - start)));
+    if (comma == std::string::npos) break;
+    start = comma + 1;
+  }
+  if (numbers.size() != 4 && numbers.size() != 6)
+    throw UsageError(
+        "--region needs X0,Y0,X1,Y1 (2D) or X0,Y0,Z0,X1,Y1,Z1 (3D), e.g. 0.5,0,2.5,0.6");
+  const int n = static_cast<int>(numbers.size() / 2);
+  camera.region_components = n;
+  for (int a = 0; a < n; ++a) {
+    camera.region_min[a] = numbers[a];
+    camera.region_max[a] = numbers[n + a];
+  }
+  return camera;
+}
+
 RenderCommandOptions parse(int argc, char** argv) {
   RenderCommandOptions o;
   std::vector<std::string> args(argv + 1, argv + argc);
@@ -140,6 +165,8 @@ RenderCommandOptions parse(int argc, char** argv) {
       o.render.fixed_range = true;
       o.render.range_min = parse_number(name, text.substr(0, comma));
       o.render.range_max = parse_number(name, text.substr(comma + 1));
+    } else if (name == "--region") {
+      o.render.camera = with_region(o.render.camera, name, value());
     } else if (name == "--video") {
       o.video = true;
     } else if (name == "--no-cutaway") {

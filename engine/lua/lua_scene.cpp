@@ -545,6 +545,29 @@ int l_output(lua_State* L) {
   return 0;
 }
 
+// camera = { region = { min = {x, y[, z]}, max = {x, y[, z]} } }: the box the view is fitted to.
+void read_camera_region(lua_State* L, int region, FrameRequest& f) {
+  if (!lua_istable(L, region))
+    fail(L, " washout.frames: camera region must be { min = ..., max = ... }");
+  check_keys(L, region, "camera region", {"min", "max"});
+  lua_getfield(L, region, "min");
+  const int n = lua_istable(L, -1) ? static_cast<int>(luaL_len(L, -1)) : 0;
+  if (n != 2 && n != 3)
+    fail(L, " washout.frames: camera region min must be a list of 2 (2D) or 3 (3D) numbers");
+  const Vec3 lo = read_vector(L, -1, "camera region min", n);
+  lua_pop(L, 1);
+  lua_getfield(L, region, "max");
+  const Vec3 hi = read_vector(L, -1, "camera region max", n);
+  lua_pop(L, 1);
+  for (int a = 0; a < n; ++a) {
+    if (!(hi[a] > lo[a]))
+      fail(L, std::string(" washout.frames: camera region max must exceed min along ") +
+                  char('x' + a));
+    f.camera_region_min[a] = lo[a], f.camera_region_max[a] = hi[a];
+  }
+  f.camera_region_components = n;
+}
+
 int l_frames(lua_State* L) {
   luaL_checktype(L, 1, LUA_TTABLE);
   check_keys(L, 1, "washout.frames", {"width", "height", "color", "every", "camera", "range"});
@@ -583,6 +606,9 @@ int l_frames(lua_State* L) {
     }
     lua_pop(L, 1);
     f.camera_fov = read_number(L, cam, "fov", "camera", false, f.camera_fov);
+    lua_getfield(L, cam, "region");
+    if (!lua_isnil(L, -1)) read_camera_region(L, lua_gettop(L), f);
+    lua_pop(L, 1);
   }
   lua_pop(L, 1);
   return 0;

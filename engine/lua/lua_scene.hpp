@@ -26,6 +26,8 @@ struct FrameRequest {
   bool camera_explicit = false;
   double camera_position[3] = {0, 0, 0}, camera_target[3] = {0, 0, 0}, camera_up[3] = {0, 0, 1};
   double camera_fov = 35;
+  int camera_region_components = 0;  // 0: no region; else 2 or 3 (render_options.hpp)
+  double camera_region_min[3] = {0, 0, 0}, camera_region_max[3] = {0, 0, 0};
 };
 
 using Overrides = std::vector<std::pair<std::string, std::string>>;

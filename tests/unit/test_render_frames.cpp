@@ -467,6 +467,49 @@ TEST(RenderFrames, ExplicitCameraLooksWhereItIsTold) {
   EXPECT_NEAR((*p)[1], plot.y + 0.5 * plot.height, 1e-6);
 }
 
+// A camera region frames that box instead of every particle: a zoom. The 2D tank's left half
+// (0 .. 0.1 m, the water's slower half) fills the drawing; its centre projects to the centre of
+// the plot, the region's corners lie inside it, and the body at x = 0.25 m is off the image.
+TEST(RenderFrames, CameraRegionZoomsTheView) {
+  const SyntheticFrame frame = tank_2d();
+  RenderOptions options = small_options();
+  options.camera.region_components = 2;
+  const double lo[2] = {0.0, 0.0}, hi[2] = {0.1, 0.1};
+  std::copy(lo, lo + 2, options.camera.region_min);
+  std::copy(hi, hi + 2, options.camera.region_max);
+  FrameRenderer renderer(options);
+  const Image image = renderer.render(frame.view());
+  image.write_png(output_path("tank_2d_region.png"));
+  const PixelRect plot = renderer.layout().plot;
+  const auto centre = renderer.project_to_pixel(0.05, 0.05);
+  std::printf("region centre projects to (%.2f, %.2f); plot centre (%.2f, %.2f)\n", (*centre)[0],
+              (*centre)[1], plot.x + 0.5 * plot.width, plot.y + 0.5 * plot.height);
+  EXPECT_NEAR((*centre)[0], plot.x + 0.5 * plot.width, 1e-6);
+  EXPECT_NEAR((*centre)[1], plot.y + 0.5 * plot.height, 1e-6);
+  // The region's height fills the plot's height less the fitting margin (kFill = 0.94).
+  const auto top = renderer.project_to_pixel(0.05, 0.1),
+             bottom = renderer.project_to_pixel(0.05, 0.0);
+  const double filled = ((*bottom)[1] - (*top)[1]) / plot.height;
+  std::printf("region height fills %.3f of the plot's height\n", filled);
+  EXPECT_NEAR(filled, 0.94, 0.01);
+  const auto body = renderer.project_to_pixel(0.26, 0.06);
+  EXPECT_GT((*body)[0], plot.x + plot.width) << "the body lies outside the zoomed view";
+  // Fluid inside the region keeps its colour: column i = 4 (0.4 m/s).
+  const auto range = renderer.color_range();
+  const Rgb8 seen = pixel_at(renderer, image, 4.5 * frame.d0, 5.5 * frame.d0);
+  EXPECT_LE(channel_distance(seen, expected_fluid(0.4, *range)), kShadingTolerance);
+
+  RenderOptions empty = small_options();
+  empty.camera.region_components = 2;
+  empty.camera.region_max[0] = 1.0;  // max y = min y = 0
+  EXPECT_THROW(FrameRenderer{empty}, RenderError);
+  RenderOptions wrong_dim = options;
+  wrong_dim.camera.region_components = 3;
+  wrong_dim.camera.region_max[2] = 1.0;
+  FrameRenderer three_components(wrong_dim);
+  EXPECT_THROW(three_components.render(frame.view()), RenderError);
+}
+
 TEST(RenderFrames, BadInputIsReported) {
   RenderOptions unknown = small_options();
   unknown.color_field = "vorticity";

@@ -57,6 +57,14 @@ TEST(SceneErrors, InvertedBoxNamesTheLine) {
   EXPECT_NE(out.error.find("min must be below max"), std::string::npos);
 }
 
+TEST(SceneErrors, EmptyCameraRegionNamesTheLine) {
+  const auto out = run("bad_camera_region.lua");
+  std::printf("%s\n", out.error.c_str());
+  EXPECT_EQ(out.exit_code, cli::kBadInput);
+  EXPECT_NE(out.error.find("bad_camera_region.lua:4"), std::string::npos);
+  EXPECT_NE(out.error.find("camera region max must exceed min along x"), std::string::npos);
+}
+
 TEST(SceneErrors, BlowUpStopsWithExitTwoAndKeepsFrames) {
   const auto out = run("blow_up.lua");
   std::printf("%s\n", out.summary.message.c_str());
