@@ -414,11 +414,8 @@ void Simulation::move_out_of_gap(std::size_t i) {
     if (!inside_domain(y) || distance_to_solids(y) < 0.5 * d0) return false;
     const double point[3] = {y[0], y[1], y[2]};
     int wet = 0;
-    grid_.for_each_candidate(point, [&](std::uint32_t f) {
-      if (f < particles_.fluid_count && f != i &&
-          (particles_.x(f) - y).squaredNorm() < 4.0 * ctx_.h * ctx_.h)
-        ++wet;
-    });
+    accumulate_fluid_at(ctx_, grid_, particles_, point,
+                        [&](std::uint32_t f, double) { wet += f != i; });
     return wet >= 3;
   };
   // Prefer a hole in the fluid (no particle within d0/2); next to the gap the fluid is usually
@@ -441,9 +438,8 @@ void Simulation::move_out_of_gap(std::size_t i) {
   const double point[3] = {spot->x(), spot->y(), spot->z()};
   Vec3 sum = Vec3::Zero();
   double weight = 0.0;
-  grid_.for_each_candidate(point, [&](std::uint32_t f) {
-    if (f >= particles_.fluid_count || f == i || trapped_[f]) return;
-    const double w = ctx_.kernel.value((particles_.x(f) - *spot).norm());
+  accumulate_fluid_at(ctx_, grid_, particles_, point, [&](std::uint32_t f, double w) {
+    if (f == i || trapped_[f]) return;
     sum += w * particles_.u(f);
     weight += w;
   });
