@@ -9,6 +9,7 @@
 #include "engine/io/run_file_writer.hpp"
 #include "engine/rigid/hydrodynamic_load.hpp"
 #include "engine/sim/body_surface_pressure.hpp"
+#include "engine/sim/push_out.hpp"
 #include "engine/sim/simulation.hpp"
 
 namespace washout {
@@ -224,12 +225,9 @@ bool RigidBodySystem::push_out(std::size_t b, Vec3& x, Vec3& u, double clearance
   const Vec3 reference = reference_point(b, x);
   const double distance = shapes_[b].signed_distance(reference, dim_);
   if (distance >= 0.0) return false;
-  const Vec3 normal_ref = shapes_[b].normal(reference, dim_, 1e-3 * clearance);
-  const Vec3 normal = s.orientation * normal_ref;
-  x += (clearance - distance) * normal;
-  const Vec3 u_body = velocity_at(b, x);
-  const double inward = (u - u_body).dot(normal);
-  if (inward < 0.0) u -= inward * normal;
+  const Vec3 normal = s.orientation * shapes_[b].normal(reference, dim_, 1e-3 * clearance);
+  push_out_of_solid(x, u, distance, normal, clearance,
+                    [&](const Vec3& y) { return velocity_at(b, y); });
   return true;
 }
 

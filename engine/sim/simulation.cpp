@@ -16,6 +16,7 @@
 #include "engine/io/run_file_writer.hpp"
 #include "engine/sim/free_spot.hpp"
 #include "engine/sim/particle_builder.hpp"
+#include "engine/sim/push_out.hpp"
 #include "engine/sim/rigid_body_system.hpp"
 
 namespace washout {
@@ -332,9 +333,7 @@ void Simulation::check_health(StepReport& report) {
       sees_wall = neighbors_.index[k] >= n;
     bool in_wall = false;
     if (sees_wall) {
-      // A particle found inside a wall or a body (pressed through a closing gap) is put back
-      // d0/2 outside it and loses its inward velocity: left inside, its pressure equation
-      // would see walls all round and throw it out at any speed.
+      // A particle found inside a wall or a body is put back d0/2 outside it (push_out.hpp).
       Vec3 x = particles_.x(i), u = particles_.u(i);
       const double clearance = 0.5 * ctx_.d0;
       for (std::size_t w = 0; w < model_.walls.size() && !in_wall; ++w) {
@@ -344,12 +343,9 @@ void Simulation::check_health(StepReport& report) {
         const Shape& shape = model_.walls[w].shape;
         const double distance = shape.signed_distance(x - shift, dim);
         in_wall = distance < 0.0;
-        if (in_wall) {
-          const Vec3 normal = shape.normal(x - shift, dim, 1e-3 * clearance);
-          x += (clearance - distance) * normal;
-          const double inward = (u - wall_velocity).dot(normal);
-          if (inward < 0.0) u -= inward * normal;
-        }
+        if (in_wall)
+          push_out_of_solid(x, u, distance, shape.normal(x - shift, dim, 1e-3 * clearance),
+                            clearance, [&](const Vec3&) { return wall_velocity; });
       }
       // Inside a body: test each body it sees once (neighbours of one body come in a row).
       std::int32_t tested = -1;
