@@ -75,8 +75,10 @@ Simulation::Simulation(Model model)
   // then solved with the pressure); the Neumann form otherwise, which keeps still water and
   // dam-break fronts slightly closer to the references (docs/method.md).
   bool dynamic_bodies = false;
-  for (std::size_t b = 0; bodies_ && b < bodies_->size(); ++b)
-    dynamic_bodies = dynamic_bodies || bodies_->dynamic(b);
+  for (std::size_t b = 0; bodies_ && b < bodies_->size(); ++b) {
+    solved_bodies_.push_back(bodies_->dynamic(b));
+    dynamic_bodies = dynamic_bodies || solved_bodies_.back();
+  }
   work_.dynamic_wall = model_.params.wall_pressure == "dynamic" ||
                        (model_.params.wall_pressure == "auto" && dynamic_bodies);
 
@@ -188,11 +190,8 @@ StepReport Simulation::step_until(double until) {
     }
   }
   if (bodies_) bodies_->set_prescribed_velocities(t_new, particles_);
-  if (work_.dynamic_wall) {
-    std::vector<std::uint8_t> solved(bodies_ ? bodies_->size() : 0, 0);
-    for (std::size_t b = 0; b < solved.size(); ++b) solved[b] = bodies_->dynamic(b);
-    update_wall_accelerations(particles_, solved, dt, previous_wall_velocity_, work_);
-  }
+  if (work_.dynamic_wall)
+    update_wall_accelerations(particles_, solved_bodies_, dt, previous_wall_velocity_, work_);
   PpeStatistics ppe;
   {
     auto s = timer_.measure("ppe_assembly");

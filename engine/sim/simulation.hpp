@@ -1,8 +1,8 @@
 #pragma once
-#include <array>
 // A run: the Model turned into particles and stepped by the stabilized ISPH projection method.
 // The step is composed from what the scene uses (no turbulence stage without turbulence, no
 // moving-wall update without moving walls); each stage's time is measured.
+#include <array>
 #include <memory>
 #include <stdexcept>
 #include <string>
@@ -140,6 +140,7 @@ class Simulation {
   FluidWork work_;
   ImplicitBodyCoupling coupling_;
   std::array<std::vector<double>, 3> previous_wall_velocity_;  // for the wall acceleration
+  std::vector<std::uint8_t> solved_bodies_;  // 1: a dynamic body, its velocity solved by coupling_
   std::unique_ptr<LinearSolver> solver_;
   std::vector<MovingWall> moving_walls_;
   std::unique_ptr<RigidBodySystem> bodies_;
