@@ -1,6 +1,6 @@
 -- Start-up of plane Poiseuille flow: fluid at rest between plates at y = 0 and y = L, periodic
 -- along x, driven from t = 0 by a body force F along x (given as gravity). The velocity profile
--- is compared with the series solution (../shared/refdata/README.md section 6) by
+-- is compared with the series solution (validation/reference/README.md) by
 -- tests/scene/test_poiseuille.cpp. A viscous fluid keeps the time scale L^2/nu at 1 s.
 local tank = require("tank")
 

@@ -1,6 +1,6 @@
 #pragma once
 // Helpers for scene tests: run a scene in-process (same pipeline as `washout run`), then read
-// its HDF5 output, and load reference data from ../shared/refdata.
+// its HDF5 output, and load reference data from validation/reference/.
 #include <gtest/gtest.h>
 
 #include <cmath>
