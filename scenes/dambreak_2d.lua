@@ -1,8 +1,10 @@
 -- Dam break of Martin & Moyce (1952), n^2 = 2: a water column of width a and height 2a
--- collapses on a dry bed. The surge front Z = x/a against T = t sqrt(2 g / a) is compared with
--- their Table 2 (../shared/refdata/mm1952_n2_front_table.csv) by tests/scene/test_dambreak.cpp.
+-- collapses on a dry bed. The scene scores itself (docs/validation.md): the RMS of the surge
+-- front Z = x/a against T = t sqrt(2 g / a) minus their Table 2 at its points with T <= 3
+-- (validation/reference/mm1952_n2_front_table.csv), also checked by tests/scene/test_dambreak.cpp.
 -- Column a = 0.146 m as in Koshizuka & Oka (1996); a/d0 = 20 by default.
 local tank = require("tank")
+local validation = require("validation")
 
 local a = 0.146
 local P = washout.parameters {
@@ -25,3 +27,6 @@ washout.probe { name = "front", quantity = "front", axis = "x" }
 washout.probe { name = "residual_height", quantity = "water_height", at = { 0.5 * P.d0, 0 } }
 -- Speeds reach about sqrt(2 g 2a) = 2.4 m/s: a fixed colour range keeps frames comparable.
 washout.frames { width = 960, height = 540, color = "speed", every = 4, range = { 0, 2.5 } }
+
+-- Bound: what the engine reaches at a/d0 = 10 and 20 with a margin (docs/validation.md).
+validation.martin_moyce_front(P, P.column_width, 0.25)

@@ -1,6 +1,8 @@
 -- Water at rest in a tank (2D). The pressure must settle to rho g (H - y) with no particle
--- crossing a wall. Used to calibrate alpha and to test the wall treatment.
+-- crossing a wall. Used to calibrate alpha and to test the wall treatment. The scene scores
+-- itself against rho g (H - y) and the water's weight (docs/validation.md).
 local tank = require("tank")
+local validation = require("validation")
 
 local P = washout.parameters {
   dim = 2,
@@ -18,3 +20,5 @@ local W, H = P.tank_width, P.water_height
 washout.fluid { washout.box { min = { 0, 0 }, max = { W, H } } }
 washout.wall { tank.open_box(P, { min = { 0, 0 }, max = { W, 1.5 * H } }), name = "tank" }
 washout.probe { name = "bottom_pressure", quantity = "pressure", at = { W / 2, 0.1 * H } }
+-- Bounds: the first-order surface offset d0/(2H) plus noise at d0 = H/10 to H/40.
+validation.hydrostatic(P, H, { 0, W }, { pressure = 0.07, floor_force = 0.05 })

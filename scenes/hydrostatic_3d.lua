@@ -1,6 +1,8 @@
 -- Water at rest in a tank (3D). The pressure must settle to rho g (H - z) with no particle
--- crossing a wall; the 3D counterpart of hydrostatic_2d.lua.
+-- crossing a wall; the 3D counterpart of hydrostatic_2d.lua. Scores itself like the 2D scene
+-- (docs/validation.md).
 local tank = require("tank")
+local validation = require("validation")
 
 local P = washout.parameters {
   dim = 3,
@@ -19,3 +21,4 @@ local L, B, H = P.tank_length, P.tank_width, P.water_height
 washout.fluid { washout.box { min = { 0, 0, 0 }, max = { L, B, H } } }
 washout.wall { tank.open_box(P, { min = { 0, 0, 0 }, max = { L, B, 1.5 * H } }), name = "tank" }
 washout.probe { name = "bottom_pressure", quantity = "pressure", at = { L / 2, B / 2, 0.1 * H } }
+validation.hydrostatic(P, H, { 0, 0, L, B }, { pressure = 0.1, floor_force = 0.05 })

@@ -76,6 +76,17 @@ RunOutcome run_scene(const RunRequest& request) {
     // Each body's CSV and wash-out summary, also after an unstable run (its file stays readable).
     outcome.bodies = report_bodies(outcome.h5_path, out_dir, sim.params().gravity, request.log);
     if (outcome.summary.status == RunStatus::Unstable) outcome.exit_code = kUnstable;
+    // Cost and, for a completed validation scene, the error against its reference.
+    outcome.cost = run_cost(outcome.summary);
+    if (outcome.summary.status != RunStatus::Unstable && scene.validates())
+      outcome.scores = scene.score(outcome.h5_path);
+    write_run_scores(outcome.h5_path, outcome.cost, outcome.scores);
+    print_run_scores(request.log, outcome.cost, outcome.scores);
+    for (const auto& s : outcome.scores)
+      if (!s.failure.empty()) {
+        outcome.exit_code = kBadInput;
+        outcome.error = "the scene's score '" + s.name + "' failed: " + s.failure;
+      }
   } catch (const SceneError& e) {
     outcome.exit_code = kBadInput;
     std::string where = e.where();

@@ -5,6 +5,7 @@
 #include <string>
 
 #include "engine/cli/body_report.hpp"
+#include "engine/cli/run_scoring.hpp"
 #include "engine/lua/lua_scene.hpp"
 #include "engine/sim/simulation.hpp"
 
@@ -29,6 +30,8 @@ struct RunOutcome {
   RunSummary summary;
   std::string h5_path;
   std::vector<BodyReport> bodies;  // one per /bodies/NAME: its CSV and summary
+  RunCost cost;                    // also stored as root attributes of the run file
+  std::vector<lua::ValidationScore> scores;  // a validation scene's errors (run_scoring.hpp)
 };
 
 RunOutcome run_scene(const RunRequest& request);

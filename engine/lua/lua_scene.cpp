@@ -743,6 +743,7 @@ LuaScene::LuaScene(const std::string& path, const Overrides& overrides)
   luaL_setfuncs(L_, functions, 1);
   lua_pushstring(L_, WASHOUT_VERSION);
   lua_setfield(L_, -2, "version");
+  validation_.install(L_);
   lua_setglobal(L_, "washout");
 
   try {

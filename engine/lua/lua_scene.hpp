@@ -8,6 +8,7 @@
 #include <utility>
 #include <vector>
 
+#include "engine/lua/lua_validation.hpp"
 #include "engine/model/model.hpp"
 #include "engine/sim/simulation.hpp"
 
@@ -44,6 +45,11 @@ class LuaScene {
   const FrameRequest& frames() const { return frames_; }
   // Calls the scene's on_step / on_frame functions; null if the scene has none.
   RunObserver* callbacks();
+  // The scores the scene declared with washout.validation{...} (lua_validation.hpp).
+  bool validates() const { return !validation_.empty(); }
+  std::vector<ValidationScore> score(const std::string& run_file) {
+    return validation_.evaluate(L_, run_file);
+  }
 
   // Implementation detail shared with the Lua C functions.
   struct Binding;
@@ -52,6 +58,7 @@ class LuaScene {
   lua_State* L_ = nullptr;
   Model model_;
   FrameRequest frames_;
+  SceneValidation validation_;
   std::unique_ptr<RunObserver> callbacks_;
   std::unique_ptr<Binding> binding_;
 };

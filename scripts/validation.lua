@@ -1,0 +1,268 @@
+-- Shared error metrics for scenes that score themselves (docs/validation.md).
+--
+--   local validation = require("validation")
+--   washout.validation {
+--     metric = "RMS of Z - Z_ref over T <= 3", reference = "Martin & Moyce (1952) Table 2",
+--     bound = 0.1,
+--     error = validation.series_rms { probe = "front", reference = points, window = { 0, 3 },
+--                                      transform = function(t, x) return t * s, x / a end },
+--   }
+--
+-- Each builder returns a function(run) -> error; `run` is the read-only view of the run file
+-- that washout hands to the error function after the run: run.probe(name) -> time, value;
+-- run.series("/stats/ppe_iterations"); run.frame(k) (-1 the last) -> {time, position, velocity,
+-- pressure, kind}; run.has(path); run.dim, run.d0, run.file.
+local validation = {}
+
+-- Linear interpolation of y(x) at x0, x increasing; clamped at both ends.
+function validation.interpolate(xs, ys, x0)
+  local n = #xs
+  if n == 0 then error("validation.interpolate: empty series", 2) end
+  if x0 <= xs[1] then return ys[1] end
+  for k = 2, n do
+    if x0 <= xs[k] then
+      return ys[k - 1] + (ys[k] - ys[k - 1]) * (x0 - xs[k - 1]) / (xs[k] - xs[k - 1])
+    end
+  end
+  return ys[n]
+end
+
+-- A reference CSV (one header line, comma separated) as columns keyed by header name; numbers
+-- where a cell reads as one. `file` is relative to validation/reference/ unless it starts
+-- with "/". keep(row) filters rows (row: header name -> cell).
+function validation.csv(file, keep)
+  local path = file:sub(1, 1) == "/" and file or (washout.reference_dir .. "/" .. file)
+  local f, why = io.open(path, "r")
+  if not f then error("validation.csv: cannot read " .. path .. ": " .. tostring(why), 2) end
+  local header, columns = {}, {}
+  for line in f:lines() do
+    line = line:gsub("\r$", "")
+    local cells = {}
+    for cell in (line .. ","):gmatch("([^,]*),") do cells[#cells + 1] = cell end
+    if #header == 0 then
+      header = cells
+      for _, name in ipairs(header) do columns[name] = {} end
+    elseif #cells >= #header then
+      local row = {}
+      for k, name in ipairs(header) do row[name] = tonumber(cells[k]) or cells[k] end
+      if keep == nil or keep(row) then
+        for _, name in ipairs(header) do table.insert(columns[name], row[name]) end
+      end
+    end
+  end
+  f:close()
+  return columns
+end
+
+local function identity(t, v) return t, v end
+
+-- The probe's series after transform(t, v) -> (x, y), e.g. to dimensionless form.
+local function probe_series(run, probe, transform)
+  local t, v = run.probe(probe)
+  local xs, ys = {}, {}
+  for k = 1, #t do xs[k], ys[k] = (transform or identity)(t[k], v[k]) end
+  return xs, ys
+end
+
+-- RMS of (probe - reference) over a window of the (transformed) time axis.
+--   reference = { x = {...}, y = {...} }: compared at the reference's points in the window and
+--               before the run's last sample (the probe is interpolated);
+--   reference = function(x) -> y: compared at every probe sample in the window.
+function validation.series_rms(o)
+  return function(run)
+    local xs, ys = probe_series(run, o.probe, o.transform)
+    local lo = o.window and o.window[1] or -math.huge
+    local hi = o.window and o.window[2] or math.huge
+    local sum2, count = 0, 0
+    if type(o.reference) == "function" then
+      for k = 1, #xs do
+        if xs[k] >= lo and xs[k] <= hi then
+          local e = ys[k] - o.reference(xs[k])
+          sum2, count = sum2 + e * e, count + 1
+        end
+      end
+    else
+      for k = 1, #o.reference.x do
+        local x = o.reference.x[k]
+        if x >= lo and x <= hi and x <= xs[#xs] then
+          local e = validation.interpolate(xs, ys, x) - o.reference.y[k]
+          sum2, count = sum2 + e * e, count + 1
+        end
+      end
+    end
+    if count < (o.min_points or 1) then
+      error("validation.series_rms: " .. count .. " points of '" .. o.probe ..
+            "' in the window, need " .. (o.min_points or 1))
+    end
+    return math.sqrt(sum2 / count)
+  end
+end
+
+-- The RMS over several series_rms-like pieces pooled together: pieces = { {probe=...}, ... }
+-- with the fields of series_rms; every compared point weighs the same.
+function validation.pooled_rms(pieces)
+  return function(run)
+    local sum2, count = 0, 0
+    for _, p in ipairs(pieces) do
+      local xs, ys = probe_series(run, p.probe, p.transform)
+      local lo = p.window and p.window[1] or -math.huge
+      local hi = p.window and p.window[2] or math.huge
+      for k = 1, #p.reference.x do
+        local x = p.reference.x[k]
+        if x >= lo and x <= hi and x <= xs[#xs] then
+          local e = validation.interpolate(xs, ys, x) - p.reference.y[k]
+          sum2, count = sum2 + e * e, count + 1
+        end
+      end
+    end
+    if count == 0 then error("validation.pooled_rms: no reference point in the run") end
+    return math.sqrt(sum2 / count)
+  end
+end
+
+-- abs(probe(time) - reference), the probe interpolated at `time` (transformed axis).
+function validation.at_time(o)
+  return function(run)
+    local xs, ys = probe_series(run, o.probe, o.transform)
+    local ref = type(o.reference) == "function" and o.reference(o.time) or o.reference
+    return math.abs(validation.interpolate(xs, ys, o.time) - ref)
+  end
+end
+
+-- abs(time mean of a series over the window - reference), divided by abs(reference) when
+-- relative = true. series(run) -> t, v (a probe's by default).
+function validation.time_mean(o)
+  return function(run)
+    local t, v
+    if o.series then t, v = o.series(run) else t, v = run.probe(o.probe) end
+    -- Trapezoids, so that uneven steps weigh by their length.
+    local area, span = 0, 0
+    for k = 2, #t do
+      local a, b = math.max(t[k - 1], o.window[1]), math.min(t[k], o.window[2])
+      if b > a then
+        local va = validation.interpolate(t, v, a)
+        local vb = validation.interpolate(t, v, b)
+        area, span = area + 0.5 * (va + vb) * (b - a), span + (b - a)
+      end
+    end
+    if span <= 0 then error("validation.time_mean: the run has no sample in the window") end
+    local e = math.abs(area / span - o.reference)
+    if o.relative then e = e / math.abs(o.reference) end
+    return e
+  end
+end
+
+-- abs(max of the probe over the window - reference), divided by abs(reference) when relative.
+function validation.peak(o)
+  return function(run)
+    local xs, ys = probe_series(run, o.probe, o.transform)
+    local best = -math.huge
+    for k = 1, #xs do
+      if xs[k] >= o.window[1] and xs[k] <= o.window[2] and ys[k] > best then best = ys[k] end
+    end
+    if best == -math.huge then error("validation.peak: no sample of '" .. o.probe .. "' in the window") end
+    local e = math.abs(best - o.reference)
+    if o.relative then e = e / math.abs(o.reference) end
+    return e
+  end
+end
+
+-- L2 error of a particle field against reference(position, time) at frame `frame` (default
+-- the last), over the fluid particles that select(position) keeps:
+--   field = "pressure" or "velocity" (component `component`, 1-based);
+--   normalize = a number: RMS(error) / normalize; otherwise the relative L2 norm
+--   sqrt(sum e^2 / sum ref^2).
+function validation.profile_l2(o)
+  return function(run)
+    local f = run.frame(o.frame or -1)
+    local values = f[o.field]
+    if values == nil then error("validation.profile_l2: the run file has no " .. o.field) end
+    local sum2, ref2, count = 0, 0, 0
+    for p = 1, #f.kind do
+      local x = f.position[p]
+      if f.kind[p] == 0 and (o.select == nil or o.select(x)) then
+        local v = values[p]
+        if type(v) == "table" then v = v[o.component or 1] end
+        local r = o.reference(x, f.time)
+        sum2, ref2, count = sum2 + (v - r) ^ 2, ref2 + r * r, count + 1
+      end
+    end
+    if count == 0 then error("validation.profile_l2: no fluid particle selected") end
+    if o.normalize then return math.sqrt(sum2 / count) / o.normalize end
+    return math.sqrt(sum2 / ref2)
+  end
+end
+
+-- The magnitude of the resolved gravity vector of the parameters P.
+function validation.g(P)
+  local g2 = 0
+  for _, c in ipairs(P.gravity) do g2 = g2 + c * c end
+  return math.sqrt(g2)
+end
+
+-- Case: the Martin & Moyce (1952) n^2 = 2 surge front of a column of width a, from a probe
+-- `front` (quantity "front", axis x, the column's back wall at x = 0). Error: RMS of
+-- Z - Z_ref, Z = x/a, at the points of their Table 2 (Ocellaris transcription) with
+-- T = t sqrt(2 g / a) <= 3 (and within the run).
+function validation.martin_moyce_front(P, a, bound)
+  local table2 = validation.csv("mm1952_n2_front_table.csv",
+                                function(row) return row.source == "ocellaris_table2" end)
+  local scale = math.sqrt(2 * validation.g(P) / a)
+  washout.validation {
+    name = "front",
+    metric = "RMS of Z - Z_ref, Z = x/a, at the table's points with T = t sqrt(2g/a) <= 3",
+    reference = "Martin & Moyce (1952) n^2 = 2 front, Table 2 (mm1952_n2_front_table.csv)",
+    bound = bound,
+    error = validation.series_rms {
+      probe = "front", window = { 0, 3 }, min_points = 5,
+      reference = { x = table2.T_t_sqrt_2g_over_a, y = table2.Z_x_over_a },
+      transform = function(t, x) return t * scale, x / a end,
+    },
+  }
+end
+
+-- Case: water at rest of depth H over a floor at vertical coordinate 0 between lo and hi
+-- (the horizontal extent of the tank's inside, {x0, x1} in 2D, {x0, y0, x1, y1} in 3D).
+-- "pressure": RMS over fluid particles deeper than 3 d0 of (P - rho g (H - z)) / (rho g H) in
+-- the last frame. "floor_force": abs(F - W) / W, F the sum of the floor's top particle layer's
+-- pressure times its area d0^(dim-1), W the water's weight rho g H times the floor area.
+function validation.hydrostatic(P, H, extent, bounds)
+  local g, rho = validation.g(P), P.rho0
+  local up = P.dim
+  washout.validation {
+    name = "pressure",
+    metric = "RMS of (P - rho g (H - z)) / (rho g H) over fluid deeper than 3 d0, last frame",
+    reference = "hydrostatics, P = rho g (H - z) (analytic)",
+    bound = bounds and bounds.pressure,
+    error = validation.profile_l2 {
+      field = "pressure", normalize = rho * g * H,
+      select = function(x) return x[up] < H - 3 * P.d0 end,
+      reference = function(x) return rho * g * (H - x[up]) end,
+    },
+  }
+  washout.validation {
+    name = "floor_force",
+    metric = "abs(F_floor - W) / W, F_floor from the floor's top wall layer, last frame",
+    reference = "the water's weight rho g H A (analytic)",
+    bound = bounds and bounds.floor_force,
+    error = function(run)
+      local f = run.frame(-1)
+      if f.pressure == nil then error("floor_force: the run wrote no pressure") end
+      local area = P.d0 ^ (P.dim - 1)
+      local force, floor_area = 0, 1
+      for a = 1, P.dim - 1 do floor_area = floor_area * (extent[P.dim - 1 + a] - extent[a]) end
+      for p = 1, #f.kind do
+        local x = f.position[p]
+        local inside = f.kind[p] == 1 and math.abs(x[up] + 0.5 * P.d0) < 0.25 * P.d0
+        for a = 1, P.dim - 1 do
+          inside = inside and x[a] > extent[a] and x[a] < extent[P.dim - 1 + a]
+        end
+        if inside then force = force + f.pressure[p] * area end
+      end
+      local weight = rho * g * H * floor_area
+      return math.abs(force - weight) / weight
+    end,
+  }
+end
+
+return validation
