@@ -4,6 +4,7 @@
 #include <string>
 
 #include "engine/cli/run_command.hpp"
+#include "engine/cli/study_command.hpp"
 #if __has_include("engine/cli/render_command.hpp")
 #include "engine/cli/render_command.hpp"
 #define WASHOUT_HAS_RENDER 1
@@ -16,7 +17,9 @@ const char* kUsage =
     "\n"
     "usage: washout run SCENE.lua [--out DIR] [--set NAME=VALUE ...] [--threads N] [--quiet]\n"
     "       washout render RUN.h5 [--out DIR] [--every K] [--width W --height H] [--color FIELD]\n"
-    "       washout study SCENE.lua --vary NAME=V1,V2,... [--out DIR]\n"
+    "       washout study SCENE.lua --vary NAME=V1,V2,... [--vary ...] [--repeat N] [--out DIR]\n"
+    "                     [--set NAME=VALUE ...] [--threads N]\n"
+    "                     (error against run time: DIR/study.csv and study.png)\n"
     "       washout --help | --version | COMMAND --help\n"
     "\n"
     "Documentation: README.md and docs/ in the source tree.\n";
@@ -38,6 +41,7 @@ int main(int argc, char** argv) {
     return 0;
   }
   if (command == "run") return washout::cli::run_command(argc - 1, argv + 1);
+  if (command == "study") return washout::cli::run_study_command(argc - 1, argv + 1);
 #ifdef WASHOUT_HAS_RENDER
   if (command == "render") return washout::cli::run_render_command(argc - 1, argv + 1);
 #endif
