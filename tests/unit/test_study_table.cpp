@@ -1,0 +1,79 @@
+// The study table's convergence fit and CSV (engine/cli/study_table.hpp).
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <filesystem>
+#include <fstream>
+
+#include "engine/cli/study_table.hpp"
+
+namespace washout::cli {
+namespace {
+
+StudyRow row(const std::string& d0, double error, const std::string& status = "ok") {
+  StudyRow r;
+  r.values = {d0};
+  r.status = status;
+  r.exit_code = status == "ok" ? 0 : 2;
+  r.wall_seconds = {3, 1, 2};
+  r.errors = {{"front", error}};
+  r.bounds = {{"front", 0.5}};
+  return r;
+}
+
+TEST(StudyTable, SecondOrderErrorGivesOrderTwo) {
+  StudyTable t;
+  t.names = {"d0"};
+  t.rows = {row("0.04", 0.16), row("0.02", 0.04), row("0.01", 0.01)};
+  const auto fits = fit_convergence(t);
+  ASSERT_EQ(fits.size(), 1u);
+  EXPECT_NEAR(fits[0].order, 2.0, 1e-12);
+  EXPECT_TRUE(fits[0].converging);
+  EXPECT_EQ(fits[0].points, 3);
+}
+
+TEST(StudyTable, RisingErrorIsNotConvergingAndUnstableRowsAreLeftOut) {
+  StudyTable t;
+  t.names = {"d0"};
+  t.rows = {row("0.0146", 0.059), row("0.0073", 0.176), row("0.00365", NAN, "unstable")};
+  const auto fits = fit_convergence(t);
+  ASSERT_EQ(fits.size(), 1u);
+  EXPECT_EQ(fits[0].points, 2);
+  EXPECT_LT(fits[0].order, 0);
+  EXPECT_FALSE(fits[0].converging);
+  EXPECT_NE(fits[0].figures.find("d0 = 0.0073: 0.176"), std::string::npos) << fits[0].figures;
+}
+
+TEST(StudyTable, OtherVariedValuesMakeSeparateFits) {
+  StudyTable t;
+  t.names = {"alpha", "d0"};
+  auto a = row("0.02", 0.1), b = row("0.01", 0.05), c = row("0.02", 0.1), d = row("0.01", 0.2);
+  a.values = {"0.1", "0.02"}, b.values = {"0.1", "0.01"}, c.values = {"0.2", "0.02"},
+  d.values = {"0.2", "0.01"};
+  t.rows = {a, b, c, d};
+  const auto fits = fit_convergence(t);
+  ASSERT_EQ(fits.size(), 2u);
+  EXPECT_EQ(fits[0].group, "alpha = 0.1");
+  EXPECT_NEAR(fits[0].order, 1.0, 1e-12);
+  EXPECT_NEAR(fits[1].order, -1.0, 1e-12);
+}
+
+TEST(StudyTable, CsvHasMinAndMedianWallTimeAndEmptyCellsForNan) {
+  StudyTable t;
+  t.names = {"d0"};
+  t.rows = {row("0.02", 0.1), row("0.01", NAN, "unstable")};
+  const auto path = std::filesystem::temp_directory_path() / "washout_study_table.csv";
+  ASSERT_TRUE(t.write_csv(path.string()));
+  std::ifstream in(path);
+  std::string header, first, second;
+  std::getline(in, header);
+  std::getline(in, first);
+  std::getline(in, second);
+  EXPECT_EQ(header.rfind("d0,status,exit_code,particles", 0), 0u) << header;
+  EXPECT_NE(first.find(",1,2,3,"), std::string::npos) << first;  // min 1, median 2, 3 repeats
+  EXPECT_NE(second.find("unstable,2,"), std::string::npos) << second;
+  EXPECT_NE(second.find(",,0.5,"), std::string::npos) << second;  // no error, bound 0.5
+}
+
+}  // namespace
+}  // namespace washout::cli
