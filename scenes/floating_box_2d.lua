@@ -5,7 +5,11 @@
 --   motion = "dynamic": released at start_draft, it must settle at D (heave period ~0.6 s).
 -- The box is twice as wide as high: a square of half the water's density floats unstably
 -- (metacentric height GM = B^2/(12 D) + D/2 - H/2 < 0 for B = H) and would roll onto a corner.
+-- The scene scores itself (docs/validation.md): abs(time mean of the draft over the last
+-- second - D) / D, the draft being the water level beside the box (the two probes' mean) less
+-- the box's bottom, as tests/support/box_draft.hpp measures it.
 local tank = require("tank")
+local validation = require("validation")
 
 local P = washout.parameters {
   dim = 2,
@@ -35,3 +39,26 @@ washout.body { washout.box { min = { x0, bottom }, max = { x0 + B, bottom + H } 
 -- The water level beside the box, halfway between it and each side wall.
 washout.probe { name = "level_left", quantity = "water_height", at = { 0.5 * x0, 0 } }
 washout.probe { name = "level_right", quantity = "water_height", at = { W - 0.5 * x0, 0 } }
+
+local D = P.box_density / P.rho0 * H
+washout.validation {
+  name = "draft",
+  metric = "abs(mean draft over the last 1 s - D) / D, draft = level beside the box - bottom",
+  reference = "Archimedes, D = (rho_b / rho_w) H (analytic)",
+  bound = 0.2,  -- one particle spacing of draft at d0 = 0.01 m (d0 / D), as the tests allow
+  error = validation.time_mean {
+    window = { math.max(0, P.end_time - 1), P.end_time }, reference = D, relative = true,
+    series = function(run)
+      local time, position = run.series("/bodies/box/time"), run.series("/bodies/box/position")
+      local lt, lv = run.probe("level_left")
+      local rt, rv = run.probe("level_right")
+      local draft = {}
+      for k = 1, #time do
+        local level = 0.5 * (validation.interpolate(lt, lv, time[k]) +
+                             validation.interpolate(rt, rv, time[k]))
+        draft[k] = level - (position[k][2] - 0.5 * H)
+      end
+      return time, draft
+    end,
+  },
+}

@@ -11,7 +11,7 @@
 -- Each builder returns a function(run) -> error; `run` is the read-only view of the run file
 -- that washout hands to the error function after the run: run.probe(name) -> time, value;
 -- run.series("/stats/ppe_iterations"); run.frame(k) (-1 the last) -> {time, position, velocity,
--- pressure, kind}; run.has(path); run.dim, run.d0, run.file.
+-- pressure, kind}; run.frame_times(); run.has(path); run.dim, run.d0, run.file.
 local validation = {}
 
 -- Linear interpolation of y(x) at x0, x increasing; clamped at both ends.
@@ -167,14 +167,22 @@ function validation.peak(o)
   end
 end
 
--- L2 error of a particle field against reference(position, time) at frame `frame` (default
--- the last), over the fluid particles that select(position) keeps:
+-- L2 error of a particle field against reference(position, time) at frame `frame` (0-based,
+-- default -1: the last) or at the frame closest to `time`, over the fluid particles that select(position) keeps:
 --   field = "pressure" or "velocity" (component `component`, 1-based);
 --   normalize = a number: RMS(error) / normalize; otherwise the relative L2 norm
 --   sqrt(sum e^2 / sum ref^2).
 function validation.profile_l2(o)
   return function(run)
-    local f = run.frame(o.frame or -1)
+    local index = o.frame or -1
+    if o.time then  -- the frame closest to that time
+      local times = run.frame_times()
+      index = 0
+      for k = 1, #times do
+        if math.abs(times[k] - o.time) < math.abs(times[index + 1] - o.time) then index = k - 1 end
+      end
+    end
+    local f = run.frame(index)
     local values = f[o.field]
     if values == nil then error("validation.profile_l2: the run file has no " .. o.field) end
     local sum2, ref2, count = 0, 0, 0

@@ -5,6 +5,7 @@
 
 #include <cstring>
 #include <filesystem>
+#include <stdexcept>
 #include <vector>
 
 #include "engine/cli/body_report.hpp"
@@ -69,7 +70,8 @@ RunOutcome run_scene(const RunRequest& request) {
     if (auto* callbacks = scene.callbacks()) observers.push_back(callbacks);
     std::unique_ptr<RunObserver> frame_writer;
     if (request.render_frames && frames.enabled) {
-      frame_writer = make_frame_output(frames, (std::filesystem::path(out_dir) / "frames").string());
+      frame_writer =
+          make_frame_output(frames, (std::filesystem::path(out_dir) / "frames").string());
       observers.push_back(frame_writer.get());
     }
     outcome.summary = sim.run(outcome.h5_path, observers);
@@ -92,10 +94,15 @@ RunOutcome run_scene(const RunRequest& request) {
     std::string where = e.where();
     const std::string what = e.what();
     // Lua messages already start with "file:line:"; others get the location prefixed.
-    if (!where.empty() && what.rfind(where, 0) != 0) outcome.error = where + ": " + what;
-    else outcome.error = what;
+    if (!where.empty() && what.rfind(where, 0) != 0)
+      outcome.error = where + ": " + what;
+    else
+      outcome.error = what;
     if (!e.parameter().empty() && outcome.error.find(e.parameter()) == std::string::npos)
       outcome.error += " (parameter '" + e.parameter() + "')";
+  } catch (const std::invalid_argument& e) {  // a setting the engine cannot build, e.g. a
+    outcome.exit_code = kBadInput;            // periodic length too short for the kernel
+    outcome.error = e.what();
   } catch (const io::OutputError& e) {
     outcome.exit_code = kOutputFailed;
     outcome.error = e.what();

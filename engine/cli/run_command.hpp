@@ -29,8 +29,8 @@ struct RunOutcome {
   std::string error;  // for exit codes 1 and 3
   RunSummary summary;
   std::string h5_path;
-  std::vector<BodyReport> bodies;  // one per /bodies/NAME: its CSV and summary
-  RunCost cost;                    // also stored as root attributes of the run file
+  std::vector<BodyReport> bodies;            // one per /bodies/NAME: its CSV and summary
+  RunCost cost;                              // also stored as root attributes of the run file
   std::vector<lua::ValidationScore> scores;  // a validation scene's errors (run_scoring.hpp)
 };
 

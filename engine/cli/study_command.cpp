@@ -376,8 +376,9 @@ int run_study_command(int argc, char** argv) {
   std::printf("study: %s, %zu run(s) in %s\n", csv.c_str(), table.rows.size(),
               duration(elapsed).c_str());
   for (const auto& row : table.rows) {
-    std::printf("  %-32s %-10s %8.0f particles %9.1f s", describe(r, row.values).c_str(),
-                row.status.c_str(), row.particles, row.wall_min());
+    std::printf("  %-32s %-10s", describe(r, row.values).c_str(), row.status.c_str());
+    if (std::isfinite(row.particles)) std::printf(" %8.0f particles", row.particles);
+    std::printf(" %9.1f s", row.wall_min());
     if (!row.errors.empty()) std::printf("  error %.4g", row.errors.front().second);
     std::printf("\n");
   }

@@ -118,6 +118,14 @@ int l_frame(lua_State* L) {
   });
 }
 
+// run.frame_times(): the time of every frame, in order.
+int l_frame_times(lua_State* L) {
+  return guarded(L, [&] {
+    push_list(L, reader(L).frame_times());
+    return 1;
+  });
+}
+
 int l_has(lua_State* L) {
   const std::string path = luaL_checkstring(L, 1);
   lua_pushboolean(L, reader(L).has(path));
@@ -135,8 +143,11 @@ void push_run(lua_State* L, const io::RunFileReader& r) {
   lua_setfield(L, -2, "d0");
   lua_pushinteger(L, static_cast<lua_Integer>(r.frame_count()));
   lua_setfield(L, -2, "frame_count");
-  const std::pair<const char*, lua_CFunction> functions[] = {
-      {"series", l_series}, {"probe", l_probe}, {"frame", l_frame}, {"has", l_has}};
+  const std::pair<const char*, lua_CFunction> functions[] = {{"series", l_series},
+                                                             {"probe", l_probe},
+                                                             {"frame", l_frame},
+                                                             {"frame_times", l_frame_times},
+                                                             {"has", l_has}};
   for (const auto& [name, f] : functions) {
     lua_pushlightuserdata(L, const_cast<io::RunFileReader*>(&r));
     lua_pushcclosure(L, f, 1);
