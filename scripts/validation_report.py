@@ -99,6 +99,13 @@ is the least-squares slope of log(error) on log(d0) over the case's completed ru
 **not converging** when that slope is not positive or its finest error is not below its
 coarsest.
 
+How far the references can be trusted (validation/reference/README.md): Martin & Moyce's front
+is their Table 2 as transcribed by two codes that agree within 0.02 in Z (their release was not
+instantaneous, so early times lag any instantaneous-release model); Lobovsky's front is a
+figure-data file of the experiment (medium-high), the gauges and the sensor-1 statistics are
+the released measurements (high; sensor 1 is a 2.5-97.5 % band over repeated runs, decimated
+to every 5th sample here). Hydrostatics, Poiseuille and Archimedes are exact.
+
 | case | error (metric) | dim | d0 [m] | particles | status | error | bound | wall [s] | peak memory [MB] | observed order |
 |---|---|---|---|---|---|---|---|---|---|---|
 """)
