@@ -45,7 +45,11 @@ def main():
         rows = list(reader)
     varied = header[: header.index("status")]
     scores = ["error"] + [h for h in header if h.startswith("error_") and
-                          not h.startswith("error_bound") and h != "error_metric"]
+                          not h.startswith("error_bound") and h not in ("error_metric", "error_name")]
+    primary = next((r.get("error_name") for r in rows if r.get("error_name")), "error")
+
+    def label_of(score):
+        return primary if score == "error" else score[len("error_"):]
     ok = [r for r in rows if r["status"] == "ok"]
     if not any(number(r["error"]) for r in ok):
         sys.exit("no completed run with an error to plot (the scene declares no reference, "
@@ -67,7 +71,7 @@ def main():
         if not pts:
             continue
         ax.loglog([w for w, _, _ in pts], [e for _, e, _ in pts], "o-",
-                  label=score if len(scores) > 1 else None)
+                  label=label_of(score) if len(scores) > 1 else None)
         for w, e, r in pts:
             ax.annotate(", ".join(f"{n}={r[n]}" for n in varied), (w, e),
                         textcoords="offset points", xytext=(4, 4), fontsize=7)
@@ -96,7 +100,7 @@ def main():
                     groups.setdefault(tuple(r[n] for n in others), []).append((d, e))
             for key, pts in groups.items():
                 pts.sort(reverse=True)
-                label = score + "".join(f", {n}={v}" for n, v in zip(others, key))
+                label = label_of(score) + "".join(f", {n}={v}" for n, v in zip(others, key))
                 fit = fit_order(pts)
                 converging = fit is not None and fit[0] > 0 and pts[-1][1] < pts[0][1]
                 if fit is not None:

@@ -52,11 +52,13 @@ def main():
             rows = list(reader)
         scores = [("error", "error_bound")] + [
             (h, "error_bound_" + h[len("error_"):]) for h in header
-            if h.startswith("error_") and not h.startswith("error_bound") and h != "error_metric"]
+            if h.startswith("error_") and not h.startswith("error_bound")
+            and h not in ("error_metric", "error_name")]
         metric = next((r["error_metric"] for r in rows if r.get("error_metric")), "")
-        primary = metric.split(";")[0]
+        primary_name = next((r["error_name"] for r in rows if r.get("error_name")), "error")
+        primary = f"{primary_name}: {metric.split(';')[0]}"
         for column, bound_column in scores:
-            label = "primary" if column == "error" else column[len("error_"):]
+            label = primary_name if column == "error" else column[len("error_"):]
             pts = [(number(r["d0"]), number(r[column])) for r in rows if r["status"] == "ok"]
             p = order(pts)
             ok_pts = sorted([x for x in pts if x[0] and x[1] is not None], reverse=True)

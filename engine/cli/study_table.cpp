@@ -62,7 +62,7 @@ bool StudyTable::write_csv(const std::string& path) const {
   // Every score beyond the primary gets its own pair of columns.
   for (std::size_t k = 1; k < scores.size(); ++k)
     out << ",error_" << scores[k] << ",error_bound_" << scores[k];
-  out << ",error_metric\n";
+  out << ",error_name,error_metric\n";
   for (const auto& r : rows) {
     for (const auto& v : r.values) out << cell(v) << ",";
     out << cell(r.status) << "," << r.exit_code << "," << number(r.particles) << ","
@@ -73,7 +73,8 @@ bool StudyTable::write_csv(const std::string& path) const {
       const std::string name = k < scores.size() ? scores[k] : "";
       out << "," << number(lookup(r.errors, name)) << "," << number(lookup(r.bounds, name));
     }
-    out << "," << cell(r.error_metric) << "\n";
+    out << "," << cell(scores.empty() ? "" : scores.front()) << "," << cell(r.error_metric)
+        << "\n";
   }
   return static_cast<bool>(out);
 }
