@@ -73,8 +73,7 @@ bool StudyTable::write_csv(const std::string& path) const {
       const std::string name = k < scores.size() ? scores[k] : "";
       out << "," << number(lookup(r.errors, name)) << "," << number(lookup(r.bounds, name));
     }
-    out << "," << cell(scores.empty() ? "" : scores.front()) << "," << cell(r.error_metric)
-        << "\n";
+    out << "," << cell(scores.empty() ? "" : scores.front()) << "," << cell(r.error_metric) << "\n";
   }
   return static_cast<bool>(out);
 }
