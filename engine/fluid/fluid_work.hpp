@@ -12,7 +12,10 @@ namespace washout {
 struct FluidWork {
   std::array<std::vector<double>, 3> u_star;           // predicted velocity u* (fluid)
   std::array<std::vector<double>, 3> marker_velocity;  // virtual-marker velocity (boundary)
-  std::vector<std::uint8_t> free_surface;              // 1: P = 0 (fluid)
+  // Free surface (fluid): 0 interior, kSurface a particle with a truncated support, kIsolated one
+  // with no fluid neighbour (a drop: always P = 0).
+  static constexpr std::uint8_t kSurface = 1, kIsolated = 2;
+  std::vector<std::uint8_t> free_surface;
   // 1: in a squeeze film between a body and another solid (fluid; empty: none). Such particles
   // are not unknowns of the PPE: they take film_pressure (squeeze_film.hpp).
   std::vector<std::uint8_t> film;

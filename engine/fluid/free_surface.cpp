@@ -20,7 +20,7 @@ std::size_t detect_free_surface(const SphContext& ctx, const NeighborList& list,
     for (std::uint64_t k = list.offset[i]; k < list.offset[i + 1] && alone; ++k)
       alone = list.index[k] >= n;
     if (alone || p.density[i] < threshold * ctx.rho0) {
-      work.free_surface[i] = 1;
+      work.free_surface[i] = alone ? FluidWork::kIsolated : FluidWork::kSurface;
       ++count;
     }
   }

@@ -33,11 +33,12 @@ struct PpeStatistics {
 };
 
 // Step 2, the stabilized PPE (pressure_poisson.cpp):
-//   <lap P>_i = (rho0/dt) <div u*>_i + alpha (rho0 - <rho>_i) / dt^2,  P = 0 on the free surface,
-// walls by the Neumann condition through virtual pressures P_w = P_i + g_iw.
+//   <lap P>_i = (rho0/dt) <div u*>_i + alpha (rho0 - <rho>_i) / dt^2,  P = 0 on the free surface
+// (ghost_surface: at d0/2 beyond the surface particles; otherwise on them), walls by the Neumann
+// condition through virtual pressures P_w = P_i + g_iw.
 PpeStatistics assemble_pressure_poisson(const SphContext& ctx, const NeighborList& list,
                                         const Particles& p, const Vec3& gravity, double alpha,
-                                        double dt, FluidWork& work);
+                                        double dt, bool ghost_surface, FluidWork& work);
 // Copies the solution back to the fluid particles' pressure (P = 0 on the free surface).
 void scatter_pressure(const FluidWork& work, Particles& p);
 // Initial guess for an iterative solve: the previous pressure of each unknown.

@@ -9,6 +9,18 @@
 // w contributes c_iw (P_i - P_w) with P_w = P_i + g_iw (wall_pressure_jump), a known term that
 // moves to the right-hand side, so the matrix stays symmetric. The divergence uses fluid
 // neighbours only; the wall's share of it is what the Neumann term imposes.
+//
+// Free surface, ghost form (default): P = 0 holds at the surface itself, d0/2 beyond the centres
+// of the surface particles, not on them. A surface particle i is an unknown; the neighbours its
+// support is missing (air) are ghosts whose pressure is the linear extrapolation through P_i
+// that vanishes at d0/2 along the outward normal n: P_k = P_i (1 - 2 (r_k . n) / d0). Their
+// share of the laplacian, sum_k c_ik (P_i - P_k) = P_i (2/d0) sum_k c_ik (r_k . n), needs only
+// the first moment of the missing weights, and on a full lattice sum_k c_ik r_k = 0, so
+//   m_i = sum_missing c_ik r_k = - sum_present c_ij (x_j - x_i),   n = m_i / |m_i|,
+// and the row gains the diagonal term 2 |m_i| / d0: symmetric and positive, no extra unknowns.
+// Imposing P = 0 on the particles themselves (surface_pressure = "on_particles") puts the
+// surface half a spacing too low: a hydrostatic error of d0/(2H) and floating bodies too deep.
+#include <cmath>
 #include <numeric>
 
 #include "engine/fluid/isph_stages.hpp"
@@ -34,18 +46,26 @@ struct UnionFind {
 
 PpeStatistics assemble_pressure_poisson(const SphContext& ctx, const NeighborList& list,
                                         const Particles& p, const Vec3& gravity, double alpha,
-                                        double dt, FluidWork& work) {
+                                        double dt, bool ghost_surface, FluidWork& work) {
   const std::size_t n = p.fluid_count;
+  // A particle whose pressure is given, not solved for: P = 0 on it (an isolated drop, or any
+  // surface particle without the ghost form) or the squeeze-film pressure.
+  const auto dirichlet = [&](std::size_t i) {
+    return work.in_film(i) || work.free_surface[i] == FluidWork::kIsolated ||
+           (!ghost_surface && work.free_surface[i] == FluidWork::kSurface);
+  };
   work.unknown.assign(n, -1);
   std::size_t rows = 0;
   for (std::size_t i = 0; i < n; ++i)
-    if (!work.free_surface[i] && !work.in_film(i))
-      work.unknown[i] = static_cast<std::int32_t>(rows++);
+    if (!dirichlet(i)) work.unknown[i] = static_cast<std::int32_t>(rows++);
 
   CsrMatrix& A = work.matrix;
   A.rows = rows;
   A.row_start.assign(rows + 1, 0);
-  std::vector<std::uint8_t> touches_surface(rows, 0), touches_film(rows, 0);
+  // touches_surface: within a support of the surface (no density-invariance term there);
+  // anchored: the row holds a known pressure (a Dirichlet neighbour or its own ghosts), so its
+  // fluid region's pressure level is fixed.
+  std::vector<std::uint8_t> touches_surface(rows, 0), anchored_row(rows, 0);
 #pragma omp parallel for schedule(static)
   for (std::size_t i = 0; i < n; ++i) {
     const std::int32_t row = work.unknown[i];
@@ -55,8 +75,9 @@ PpeStatistics assemble_pressure_poisson(const SphContext& ctx, const NeighborLis
       const std::size_t j = list.index[k];
       if (j < n && work.unknown[j] >= 0) ++count;
       if (j < n && work.free_surface[j]) touches_surface[row] = 1;
-      if (j < n && work.in_film(j)) touches_film[row] = 1;
+      if (j < n && work.unknown[j] < 0) anchored_row[row] = 1;
     }
+    if (work.free_surface[i]) touches_surface[row] = anchored_row[row] = 1;
     A.row_start[row + 1] = count;
   }
   for (std::size_t r = 0; r < rows; ++r) A.row_start[r + 1] += A.row_start[r];
@@ -72,6 +93,7 @@ PpeStatistics assemble_pressure_poisson(const SphContext& ctx, const NeighborLis
     if (row < 0) continue;
     std::int64_t slot = A.row_start[row] + 1;
     double diagonal = 0.0, divergence = 0.0, wall_term = 0.0;
+    double missing[3] = {0, 0, 0};  // m_i, first moment of the missing laplacian weights
     for (std::uint64_t k = list.offset[i]; k < list.offset[i + 1]; ++k) {
       const std::size_t j = list.index[k];
       double d[3];
@@ -79,13 +101,14 @@ PpeStatistics assemble_pressure_poisson(const SphContext& ctx, const NeighborLis
       const double r2 = d[0] * d[0] + d[1] * d[1] + d[2] * d[2];
       const double r = std::sqrt(r2);
       const double c = -ctx.laplacian_weight(r, r2);  // c_ij >= 0
+      for (int a = 0; a < ctx.dim; ++a) missing[a] += c * d[a];  // -c (x_j - x_i)
       if (j < n) {
         diagonal += c;
         if (work.unknown[j] >= 0) {
           A.column[slot] = work.unknown[j];
           A.value[slot++] = -c;
         } else if (work.in_film(j)) {
-          wall_term += c * work.film_pressure[j];  // a known pressure, as P = 0 at the surface
+          wall_term += c * work.film_pressure[j];  // a known pressure, as P = 0 on a drop
         }
         // Difference-form divergence: sum_j V (u*_j - u*_i) . grad W_ij
         const double f = g_scale * ctx.kernel.derivative_over_r(r);
@@ -110,6 +133,12 @@ PpeStatistics assemble_pressure_poisson(const SphContext& ctx, const NeighborLis
         }
       }
     }
+    if (ghost_surface && work.free_surface[i]) {
+      // Ghost air beyond the surface (see the top of this file): 2 |m_i| / d0 on the diagonal.
+      double m2 = 0.0;
+      for (int a = 0; a < ctx.dim; ++a) m2 += missing[a] * missing[a];
+      diagonal += 2.0 * std::sqrt(m2) / ctx.d0;
+    }
     A.column[A.row_start[row]] = row;
     A.value[A.row_start[row]] = diagonal;
     // Within a kernel support of the free surface the summation density is low only because the
@@ -131,8 +160,7 @@ PpeStatistics assemble_pressure_poisson(const SphContext& ctx, const NeighborLis
       components.unite(static_cast<std::int32_t>(r), A.column[k]);
   std::vector<std::uint8_t> anchored(rows, 0);
   for (std::size_t r = 0; r < rows; ++r)
-    if (touches_surface[r] || touches_film[r])
-      anchored[components.find(static_cast<std::int32_t>(r))] = 1;
+    if (anchored_row[r]) anchored[components.find(static_cast<std::int32_t>(r))] = 1;
   std::vector<double> rhs_sum(rows, 0.0);
   std::vector<std::int64_t> size(rows, 0);
   for (std::size_t r = 0; r < rows; ++r) {

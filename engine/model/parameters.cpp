@@ -62,6 +62,11 @@ const std::vector<ParameterInfo>& ParameterSet::engine_table() {
        "a particle whose density is below this fraction of the full-support density is on the "
        "free surface and takes P = 0",
        0.9},
+      {"surface_pressure", "-",
+       "where P = 0 holds at the free surface: \"ghost\" (d0/2 beyond the surface particles, "
+       "through ghost values of the missing neighbours) or \"on_particles\" (on the surface "
+       "particles themselves, half a spacing too low)",
+       std::string("ghost")},
       {"dt", "s", "fixed time step; 0 = adaptive (cfl, viscous_number, dt_max)", 0.0},
       {"cfl", "-", "Courant number for the adaptive step: dt <= cfl h / max|u|", 0.2},
       {"viscous_number", "-", "viscous limit of the adaptive step: dt <= viscous_number h^2 / nu",
@@ -290,6 +295,7 @@ SimulationParameters SimulationParameters::from(const ParameterSet& set) {
   p.alpha = non_negative("alpha");
   if (p.alpha > 1) throw ParameterError("alpha", "parameter 'alpha' must lie in [0, 1]");
   p.free_surface_threshold = in_unit_interval("free_surface_threshold");
+  p.surface_pressure = one_of("surface_pressure", {"ghost", "on_particles"});
   p.dt = non_negative("dt");
   p.cfl = positive("cfl");
   p.viscous_number = positive("viscous_number");

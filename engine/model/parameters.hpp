@@ -71,6 +71,7 @@ struct SimulationParameters {
   Vec3 gravity = Vec3(0, -9.81, 0);
   double alpha = 0.05;
   double free_surface_threshold = 0.9;
+  std::string surface_pressure = "ghost";
   double dt = 0.0;  // 0: adaptive
   double cfl = 0.2;
   double viscous_number = 0.125;

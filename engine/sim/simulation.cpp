@@ -196,7 +196,8 @@ StepReport Simulation::step_until(double until) {
   {
     auto s = timer_.measure("ppe_assembly");
     ppe =
-        assemble_pressure_poisson(ctx_, neighbors_, particles_, prm.gravity, prm.alpha, dt, work_);
+        assemble_pressure_poisson(ctx_, neighbors_, particles_, prm.gravity, prm.alpha, dt,
+                                  prm.surface_pressure == "ghost", work_);
   }
   {
     auto s = timer_.measure("ppe_solve");

@@ -49,7 +49,7 @@ TEST(PressurePoisson, ManufacturedSolutionBothSolvers) {
       const double x = p.position[0][i], y = p.position[1][i];
       work.free_surface[i] = x < d0 || y < d0 || x > 1 - d0 || y > 1 - d0;
     }
-    const auto stats = assemble_pressure_poisson(ctx, list, p, Vec3::Zero(), 0.0, 1e-3, work);
+    const auto stats = assemble_pressure_poisson(ctx, list, p, Vec3::Zero(), 0.0, 1e-3, false, work);
     EXPECT_EQ(stats.pinned_components, 0u);
     // Rows read sum_j c_ij (P_i - P_j) = -lap P: put the analytic laplacian on the right.
     std::vector<double> exact(stats.unknowns);
@@ -82,7 +82,7 @@ TEST(PressurePoisson, MatrixIsSymmetric) {
   LatticeSystem sys(12, 0.05, irregular_offset);
   auto& [ctx, p, list, work] = sys;
   for (std::size_t i = 0; i < 12; ++i) work.free_surface[i] = 1;  // bottom row: Dirichlet
-  assemble_pressure_poisson(ctx, list, p, Vec3::Zero(), 0.0, 1e-3, work);
+  assemble_pressure_poisson(ctx, list, p, Vec3::Zero(), 0.0, 1e-3, false, work);
   const CsrMatrix& A = work.matrix;
   double asymmetry = 0;
   for (std::size_t r = 0; r < A.rows; ++r) {
