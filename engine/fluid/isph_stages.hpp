@@ -26,6 +26,14 @@ void compute_eddy_viscosity(const SphContext& ctx, const NeighborList& list, con
 void predict_velocity(const SphContext& ctx, const NeighborList& list, const Particles& p,
                       double viscosity, const Vec3& gravity, double dt, FluidWork& work);
 
+// Wall function: the first fluid layer loses the part of the smooth-wall law-of-the-wall stress
+// that the resolved viscous term does not carry, scaled by (1 - slip) (wall_shear.cpp).
+void apply_wall_shear(const SphContext& ctx, const NeighborList& list, const Particles& p,
+                      double viscosity, double dt, FluidWork& work);
+// u_* of the law of the wall for a tangential speed u_t at distance y (viscous sublayer below
+// y+ = 11.06, log layer above).
+double friction_velocity(double u_t, double y, double nu);
+
 struct PpeStatistics {
   std::size_t unknowns = 0;
   std::size_t nonzeros = 0;
@@ -75,6 +83,9 @@ inline double wall_pressure_jump(const SphContext& ctx, const Particles& p, cons
     gr += gravity[a] * r;
     gn += gravity[a] * n;
   }
+  // A free-surface particle leaving a wall separates from it: the wall pushes, it does not pull
+  // (its pressure would otherwise drop below the air's to hold the particle on the wall).
+  if (work.free_surface[i] && un > 0.0) un = 0.0;
   return ctx.rho0 * (un / dt * rn + (gr - gn * rn));
 }
 
@@ -85,8 +96,10 @@ double correct_and_advect(const SphContext& ctx, const NeighborList& list, Parti
                           bool symmetric_gradient, double surface_smoothing,
                           std::vector<double>& smoothed);
 
-// Optional Fickian particle shifting after the position update (particle_shifting.cpp).
+// Fickian particle shifting after the position update (particle_shifting.cpp):
+//   delta r = -(A h^2 + A_u h |u| dt) grad C.
 void shift_particles(const SphContext& ctx, const NeighborList& list, Particles& p,
-                     const FluidWork& work, double coefficient, std::vector<double>& scratch);
+                     const FluidWork& work, double coefficient, double speed_coefficient,
+                     double dt, std::vector<double>& scratch);
 
 }  // namespace washout

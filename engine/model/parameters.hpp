@@ -79,6 +79,7 @@ struct SimulationParameters {
   double dt_min = 1e-7;
   double end_time = 1.0;
   double wall_slip = 0.65;
+  std::string wall_friction = "none";
   int wall_layers = 0;  // 0: enough to fill the kernel support
   std::string turbulence = "none";
   double smagorinsky_constant = 0.12;
@@ -88,6 +89,7 @@ struct SimulationParameters {
   std::string pressure_gradient = "symmetric";
   std::string wall_pressure = "auto";
   double shifting = 0.0;
+  double shifting_with_speed = 2.0;
   double surface_smoothing = 0.5;
   double output_interval = 0.05;
   double max_speed = 0.0;  // 0: automatic from gravity and domain size

@@ -180,6 +180,10 @@ StepReport Simulation::step_until(double until) {
     auto s = timer_.measure("predictor");
     predict_velocity(ctx_, neighbors_, particles_, prm.viscosity, prm.gravity, dt, work_);
   }
+  if (prm.wall_friction == "log_law") {
+    auto s = timer_.measure("wall_shear");
+    apply_wall_shear(ctx_, neighbors_, particles_, prm.viscosity, dt, work_);
+  }
   if (!moving_walls_.empty()) {
     auto s = timer_.measure("moving_walls");
     for (auto& wall : moving_walls_) {
@@ -241,9 +245,10 @@ StepReport Simulation::step_until(double until) {
                                     prm.pressure_gradient == "symmetric", prm.surface_smoothing,
                                     shift_scratch_);
   }
-  if (prm.shifting > 0) {
+  if (prm.shifting > 0 || prm.shifting_with_speed > 0) {
     auto s = timer_.measure("shifting");
-    shift_particles(ctx_, neighbors_, particles_, work_, prm.shifting, shift_scratch_);
+    shift_particles(ctx_, neighbors_, particles_, work_, prm.shifting, prm.shifting_with_speed, dt,
+                    shift_scratch_);
   }
   for (auto& wall : moving_walls_) set_wall_position(wall, particles_);
   if (bodies_) {
