@@ -78,8 +78,7 @@ const std::vector<ParameterInfo>& ParameterSet::engine_table() {
       {"wall_friction", "-",
        "\"log_law\": the first fluid layer at a wall feels the smooth-wall law-of-the-wall "
        "stress the resolved viscous term misses, times (1 - wall_slip); \"none\": viscous "
-       "stress only (default: at the paper's resolutions it moves the dam-break front by "
-       "under 0.01 a, docs/method.md)",
+       "stress only (default: it moves the dam-break front by about 0.01 a, docs/method.md)",
        std::string("none")},
       {"wall_layers", "-", "wall particle layers; 0 = enough to fill the kernel support", 0.0},
       {"turbulence", "-", "\"none\" or \"smagorinsky\" (sub-particle-scale eddy viscosity)",
@@ -103,9 +102,9 @@ const std::vector<ParameterInfo>& ParameterSet::engine_table() {
        "fixed particle shifting A: delta r = -A h^2 grad C each step (Lind et al. 2012); 0 = off",
        0.0},
       {"shifting_with_speed", "-",
-       "particle shifting in proportion to the distance moved, A_u: delta r = -A_u h |u| dt "
-       "grad C (Skillen et al. 2013); keeps fast flows free of particle clumping and leaves "
-       "still water alone; 0 = off",
+       "particle shifting in proportion to the distance moved, A_u: delta r = -A_u h u dt grad C "
+       "with u the particle's speed (Skillen et al. 2013); keeps fast flows free of particle "
+       "clumping and leaves still water alone; 0 = off",
        2.0},
       {"surface_smoothing", "-",
        "free-surface particles move with this fraction of their neighbourhood's mean velocity "
