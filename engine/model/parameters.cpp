@@ -118,6 +118,10 @@ const std::vector<ParameterInfo>& ParameterSet::engine_table() {
                           "empty = bounding box of the scene plus a margin", Vec{}},
       {"domain_max", "m", "upper corner of the domain", Vec{}},
       {"threads", "-", "OpenMP threads; 0 = all cores (the CLI's --threads wins)", 0.0},
+      {"max_particles", "-",
+       "a scene whose particle count, estimated from its shapes before anything is allocated, "
+       "exceeds this is refused (exit 1), so a mistyped d0 cannot exhaust the machine's memory",
+       5e7},
   };
   return table;
 }
@@ -342,6 +346,7 @@ SimulationParameters SimulationParameters::from(const ParameterSet& set) {
   if (!p.periodic.empty() && (p.domain_min.empty() || p.domain_max.empty()))
     throw ParameterError("periodic", "periodic axes need domain_min and domain_max");
   p.threads = integer("threads", non_negative("threads"));
+  p.max_particles = positive("max_particles");
   return p;
 }
 

@@ -96,6 +96,7 @@ struct SimulationParameters {
   std::string periodic;    // axes, e.g. "x"
   std::vector<double> domain_min, domain_max;
   int threads = 0;
+  double max_particles = 5e7;  // refused above this estimate before allocating
 
   double h() const { return h_over_d0 * d0; }
   static SimulationParameters from(const ParameterSet& set);
