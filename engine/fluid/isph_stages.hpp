@@ -99,7 +99,7 @@ double correct_and_advect(const SphContext& ctx, const NeighborList& list, Parti
 // Fickian particle shifting after the position update (particle_shifting.cpp):
 //   delta r = -(A h^2 + A_u h |u| dt) grad C.
 void shift_particles(const SphContext& ctx, const NeighborList& list, Particles& p,
-                     const FluidWork& work, double coefficient, double speed_coefficient,
-                     double dt, std::vector<double>& scratch);
+                     const FluidWork& work, double coefficient, double speed_coefficient, double dt,
+                     std::vector<double>& scratch);
 
 }  // namespace washout

@@ -13,8 +13,8 @@
 namespace washout {
 
 void shift_particles(const SphContext& ctx, const NeighborList& list, Particles& p,
-                     const FluidWork& work, double coefficient, double speed_coefficient,
-                     double dt, std::vector<double>& scratch) {
+                     const FluidWork& work, double coefficient, double speed_coefficient, double dt,
+                     std::vector<double>& scratch) {
   const std::size_t n = p.fluid_count;
   scratch.assign(3 * n, 0.0);
   const double lattice = ctx.volume * ctx.gradient_correction;
@@ -39,8 +39,8 @@ void shift_particles(const SphContext& ctx, const NeighborList& list, Particles&
     // the particle moved, so still water is left alone).
     double speed2 = 0.0;
     for (int a = 0; a < ctx.dim; ++a) speed2 += p.velocity[a][i] * p.velocity[a][i];
-    const double scale =
-        lattice * (coefficient * ctx.h * ctx.h + speed_coefficient * ctx.h * std::sqrt(speed2) * dt);
+    const double scale = lattice * (coefficient * ctx.h * ctx.h +
+                                    speed_coefficient * ctx.h * std::sqrt(speed2) * dt);
     double shift[3] = {0, 0, 0}, norm2 = 0.0;
     for (int a = 0; a < ctx.dim; ++a) {
       shift[a] = -scale * grad[a];

@@ -100,7 +100,7 @@ PpeStatistics assemble_pressure_poisson(const SphContext& ctx, const NeighborLis
       ctx.displacement(p, i, j, d);
       const double r2 = d[0] * d[0] + d[1] * d[1] + d[2] * d[2];
       const double r = std::sqrt(r2);
-      const double c = -ctx.laplacian_weight(r, r2);  // c_ij >= 0
+      const double c = -ctx.laplacian_weight(r, r2);             // c_ij >= 0
       for (int a = 0; a < ctx.dim; ++a) missing[a] += c * d[a];  // -c (x_j - x_i)
       if (j < n) {
         diagonal += c;

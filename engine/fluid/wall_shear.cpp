@@ -59,7 +59,7 @@ void apply_wall_shear(const SphContext& ctx, const NeighborList& list, const Par
     ctx.displacement(p, i, nearest, d);
     double y = -p.wall_distance[nearest];
     for (int a = 0; a < ctx.dim; ++a) y += d[a] * p.normal[a][nearest];
-    if (y > ctx.d0) continue;       // not in the first fluid layer
+    if (y > ctx.d0) continue;        // not in the first fluid layer
     y = std::max(y, 0.25 * ctx.d0);  // a particle pressed into the wall layer
     double rel[3] = {0, 0, 0}, un = 0.0;
     for (int a = 0; a < ctx.dim; ++a) {

@@ -199,9 +199,8 @@ StepReport Simulation::step_until(double until) {
   PpeStatistics ppe;
   {
     auto s = timer_.measure("ppe_assembly");
-    ppe =
-        assemble_pressure_poisson(ctx_, neighbors_, particles_, prm.gravity, prm.alpha, dt,
-                                  prm.surface_pressure == "ghost", work_);
+    ppe = assemble_pressure_poisson(ctx_, neighbors_, particles_, prm.gravity, prm.alpha, dt,
+                                    prm.surface_pressure == "ghost", work_);
   }
   {
     auto s = timer_.measure("ppe_solve");

@@ -69,7 +69,8 @@ FrontResult run_front(const std::string& scene, const std::string& test_name, co
 // beyond the surface particles, which at a two-particle tip slows it): measured 0.156, mean
 // -0.136 in 2D; 0.199, mean -0.175 in 3D. At a/d0 = 20 it leads: 0.147, mean +0.13.
 TEST(DamBreak, Front2dCoarse) {
-  const auto r = run_front("dambreak_2d.lua", "dambreak_2d_a10", "2D, a/d0 = 10", {{"d0", "0.0146"}});
+  const auto r =
+      run_front("dambreak_2d.lua", "dambreak_2d_a10", "2D, a/d0 = 10", {{"d0", "0.0146"}});
   EXPECT_LT(r.rms, 0.19);
   EXPECT_EQ(r.wall_crossings, 0);
 }
@@ -82,7 +83,8 @@ TEST(DamBreak, Front2dDefault) {
 }
 
 TEST(DamBreak, Front3dCoarse) {
-  const auto r = run_front("dambreak_3d.lua", "dambreak_3d_a10", "3D, a/d0 = 10", {{"d0", "0.0146"}});
+  const auto r =
+      run_front("dambreak_3d.lua", "dambreak_3d_a10", "3D, a/d0 = 10", {{"d0", "0.0146"}});
   EXPECT_LT(r.rms, 0.24);
 }
 

@@ -49,7 +49,8 @@ TEST(PressurePoisson, ManufacturedSolutionBothSolvers) {
       const double x = p.position[0][i], y = p.position[1][i];
       work.free_surface[i] = x < d0 || y < d0 || x > 1 - d0 || y > 1 - d0;
     }
-    const auto stats = assemble_pressure_poisson(ctx, list, p, Vec3::Zero(), 0.0, 1e-3, false, work);
+    const auto stats =
+        assemble_pressure_poisson(ctx, list, p, Vec3::Zero(), 0.0, 1e-3, false, work);
     EXPECT_EQ(stats.pinned_components, 0u);
     // Rows read sum_j c_ij (P_i - P_j) = -lap P: put the analytic laplacian on the right.
     std::vector<double> exact(stats.unknowns);
@@ -61,7 +62,8 @@ TEST(PressurePoisson, ManufacturedSolutionBothSolvers) {
       work.rhs[row] = 2 * std::pow(std::numbers::pi / L, 2) * exact[row];
     }
     for (const char* name : {"cholmod", "pcg"}) {
-      auto solver = std::string(name) == "cholmod" ? make_cholmod_solver() : make_pcg_solver(1e-10, 5000);
+      auto solver =
+          std::string(name) == "cholmod" ? make_cholmod_solver() : make_pcg_solver(1e-10, 5000);
       std::vector<double> x(stats.unknowns, 0.0);
       const auto report = solver->solve(work.matrix, work.rhs, x);
       double err = 0;
