@@ -3,6 +3,7 @@
 #include <omp.h>
 #include <unistd.h>
 
+#include <cmath>
 #include <cstring>
 #include <filesystem>
 #include <stdexcept>
@@ -10,6 +11,7 @@
 
 #include "engine/cli/body_report.hpp"
 #include "engine/cli/frame_output.hpp"
+#include "engine/cli/interrupt.hpp"
 #include "engine/cli/progress_display.hpp"
 #include "engine/io/run_file_reader.hpp"
 #include "engine/io/run_file_writer.hpp"
@@ -28,7 +30,12 @@ const char* kRunUsage =
     "  --threads N        OpenMP threads (default: the scene's `threads`, else all cores)\n"
     "  --quiet            one line per output frame instead of a live progress line\n"
     "  --list-parameters  print every engine parameter with its unit, default and meaning\n"
-    "Exit status: 0 success, 1 wrong scene or input, 2 unstable simulation, 3 output failed.\n";
+    "  --lua-time-limit S     stop (exit 1) the scene script or a callback or motion function\n"
+    "                         that has not returned after S seconds (default 60)\n"
+    "  --lua-memory-limit MIB the most memory the scene's Lua code may hold (default 1024)\n"
+    "Exit status: 0 success, 1 wrong scene or input, 2 unstable simulation, 3 output failed,\n"
+    "4 interrupted by SIGINT or SIGTERM (last frame, body reports and summary written; a second\n"
+    "signal stops at once).\n";
 
 std::string format_default(const ParameterValue& v) {
   if (auto d = std::get_if<double>(&v)) {
@@ -48,7 +55,7 @@ std::string format_default(const ParameterValue& v) {
 RunOutcome run_scene(const RunRequest& request) {
   RunOutcome outcome;
   try {
-    lua::LuaScene scene(request.scene_path, request.overrides);
+    lua::LuaScene scene(request.scene_path, request.overrides, request.lua_limits);
     Model& model = scene.model();
     const int threads = request.threads > 0 ? request.threads : model.params.threads;
     if (threads > 0) omp_set_num_threads(threads);
@@ -74,13 +81,16 @@ RunOutcome run_scene(const RunRequest& request) {
           make_frame_output(frames, (std::filesystem::path(out_dir) / "frames").string());
       observers.push_back(frame_writer.get());
     }
+    InterruptObserver interrupt;  // last, so that its reason names the signal
+    observers.push_back(&interrupt);
     outcome.summary = sim.run(outcome.h5_path, observers);
     // Each body's CSV and wash-out summary, also after an unstable run (its file stays readable).
     outcome.bodies = report_bodies(outcome.h5_path, out_dir, sim.params().gravity, request.log);
     if (outcome.summary.status == RunStatus::Unstable) outcome.exit_code = kUnstable;
+    const bool interrupted = interrupt_signal() != 0;
     // Cost and, for a completed validation scene, the error against its reference.
     outcome.cost = run_cost(outcome.summary);
-    if (outcome.summary.status != RunStatus::Unstable && scene.validates())
+    if (outcome.summary.status != RunStatus::Unstable && !interrupted && scene.validates())
       outcome.scores = scene.score(outcome.h5_path);
     write_run_scores(outcome.h5_path, outcome.cost, outcome.scores);
     print_run_scores(request.log, outcome.cost, outcome.scores);
@@ -89,6 +99,13 @@ RunOutcome run_scene(const RunRequest& request) {
         outcome.exit_code = kBadInput;
         outcome.error = "the scene's score '" + s.name + "' failed: " + s.failure;
       }
+    if (interrupted && outcome.exit_code == kSuccess) {
+      outcome.exit_code = kInterrupted;
+      char when[64];
+      std::snprintf(when, sizeof when, " at t = %g s", outcome.summary.time);
+      outcome.error =
+          outcome.summary.message + when + "; every frame up to then is in " + outcome.h5_path;
+    }
   } catch (const SceneError& e) {
     outcome.exit_code = kBadInput;
     std::string where = e.where();
@@ -154,6 +171,16 @@ int run_command(int argc, char** argv) {
         return kBadInput;
       }
       request.threads = static_cast<int>(n);
+    } else if (arg == "--lua-time-limit" || arg == "--lua-memory-limit") {
+      const std::string v = value(arg.c_str());
+      char* end = nullptr;
+      const double x = std::strtod(v.c_str(), &end);
+      if (end == v.c_str() || *end != '\0' || !(x > 0) || !std::isfinite(x)) {
+        std::fprintf(stderr, "washout run: %s needs a positive number, got '%s'\n", arg.c_str(),
+                     v.c_str());
+        return kBadInput;
+      }
+      (arg == "--lua-time-limit" ? request.lua_limits.seconds : request.lua_limits.memory_mib) = x;
     } else if (arg == "--quiet" || arg == "-q") {
       quiet = true;
     } else if (!arg.empty() && arg[0] == '-') {
@@ -172,6 +199,7 @@ int run_command(int argc, char** argv) {
     return kBadInput;
   }
   request.live_progress = !quiet && isatty(fileno(stdout));
+  install_interrupt_handlers();
   const RunOutcome outcome = run_scene(request);
   if (!outcome.error.empty()) std::fprintf(stderr, "error: %s\n", outcome.error.c_str());
   return outcome.exit_code;

@@ -12,7 +12,7 @@
 namespace washout::cli {
 
 // Exit statuses of INTERFACE.md.
-enum ExitCode { kSuccess = 0, kBadInput = 1, kUnstable = 2, kOutputFailed = 3 };
+enum ExitCode { kSuccess = 0, kBadInput = 1, kUnstable = 2, kOutputFailed = 3, kInterrupted = 4 };
 
 struct RunRequest {
   std::string scene_path;
@@ -22,6 +22,7 @@ struct RunRequest {
   bool live_progress = false;
   bool render_frames = true;  // honour the scene's washout.frames{...}
   std::FILE* log = stdout;
+  lua::LuaLimitSettings lua_limits;  // --lua-memory-limit, --lua-time-limit
 };
 
 struct RunOutcome {

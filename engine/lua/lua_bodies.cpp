@@ -6,6 +6,7 @@
 #include <lua.hpp>
 #include <string>
 
+#include "engine/lua/lua_errors.hpp"
 #include "engine/lua/lua_reading.hpp"
 #include "engine/rigid/quaternion_integrator.hpp"
 #include "engine/sim/rigid_body_system.hpp"
@@ -27,33 +28,29 @@ BodyMotion make_body_motion(lua_State* L, int ref, const std::string& name, int 
   auto call = [L, ref, name, dim](double t) {
     lua_rawgeti(L, LUA_REGISTRYINDEX, ref);
     lua_pushnumber(L, t);
-    if (lua_pcall(L, 1, 2, 0) != LUA_OK) {
-      const std::string m = lua_tostring(L, -1);
-      lua_pop(L, 1);
-      throw SceneError("motion of body '" + name + "' failed at t = " + std::to_string(t) + ": " +
-                       m);
-    }
+    const std::string what = "motion of body '" + name + "' at t = " + number_text(t);
+    const int status = protected_call(L, 1, 2);
+    if (status != LUA_OK) throw SceneError(what + " failed: " + pop_error(L, status));
+    // Checked on every call: a displacement of dim numbers, then nothing, an angle about z
+    // (2D) or a rotation vector of 3 numbers (3D), all finite.
     Pose pose;
-    auto read = [&](int slot, Vec3& v) {
-      const lua_Integer n = std::min<lua_Integer>(luaL_len(L, slot), 3);
-      for (lua_Integer k = 1; k <= n; ++k) {
-        lua_geti(L, slot, k);
-        v[k - 1] = lua_tonumber(L, -1);
-        lua_pop(L, 1);
+    try {
+      pose.displacement = returned_vector(L, -2, dim, what + ": the displacement");
+      if (dim == 3 && !lua_isnil(L, -1)) {
+        pose.rotation = returned_vector(L, -1, 3, what + ": the rotation vector");
+      } else if (dim == 2 && !lua_isnil(L, -1)) {
+        if (lua_type(L, -1) != LUA_TNUMBER)
+          throw SceneError(what + ": the rotation must be an angle about z (a number), got a " +
+                           luaL_typename(L, -1));
+        pose.rotation.z() = lua_tonumber(L, -1);
+        if (!std::isfinite(pose.rotation.z()))
+          throw SceneError(what + ": the rotation must be finite, got " +
+                           number_text(pose.rotation.z()));
       }
-    };
-    const bool has_displacement = lua_istable(L, -2);
-    const bool rotation_ok =
-        lua_isnil(L, -1) || (dim == 2 ? lua_isnumber(L, -1) != 0 : lua_istable(L, -1));
-    if (!has_displacement || !rotation_ok) {
+    } catch (...) {
       lua_pop(L, 2);
-      throw SceneError("motion of body '" + name + "' must return a displacement {dx, dy" +
-                       (dim == 3 ? ", dz" : "") + "} and optionally a rotation (" +
-                       (dim == 2 ? "an angle about z" : "a rotation vector {rx, ry, rz}") + ")");
+      throw;
     }
-    read(-2, pose.displacement);
-    if (dim == 2 && lua_isnumber(L, -1)) pose.rotation.z() = lua_tonumber(L, -1);
-    if (dim == 3 && lua_istable(L, -1)) read(-1, pose.rotation);
     lua_pop(L, 2);
     return pose;
   };

@@ -9,7 +9,9 @@
 #include <sstream>
 
 #include "engine/lua/lua_bodies.hpp"
+#include "engine/lua/lua_errors.hpp"
 #include "engine/lua/lua_reading.hpp"
+#include "engine/lua/scene_checks.hpp"
 
 namespace washout::lua {
 namespace detail {
@@ -71,6 +73,8 @@ struct LuaScene::Binding {
           const int scene_table = lua_gettop(Ls);
           lua_pushnil(Ls);
           while (lua_next(Ls, scene_table) != 0) {
+            if (lua_type(Ls, -2) != LUA_TSTRING)
+              fail(Ls, " washout.parameters: the keys of 'scene' must be names");
             const std::string sname = lua_tostring(Ls, -2);
             try {
               set.declare(sname, to_value(Ls, -1, sname));
@@ -107,6 +111,13 @@ struct LuaScene::Binding {
         raise(Ls, SceneError(std::string("--set ") + e.name() + ": " + e.what(), "command line",
                              e.name()));
       fail(Ls, std::string(" ") + e.what());
+    }
+    // NaN passes every range check (all comparisons are false), so it is refused by name here.
+    if (const std::string bad = non_finite_parameter(set); !bad.empty()) {
+      const std::string m = "parameter '" + bad + "' must be finite (no NaN or inf)";
+      for (const auto& o : overrides)
+        if (o.first == bad) raise(Ls, SceneError("--set " + bad + ": " + m, "command line", bad));
+      fail(Ls, " " + m);
     }
     scene->model_.parameter_set = set;
     resolved = true;
@@ -283,8 +294,14 @@ Shape read_shape(lua_State* L, int index, int dim) {
     if (luaL_len(L, index) > 0) return read_shape_list(L, index, dim);
     fail(L, " expected a shape (washout.box{...}, washout.cylinder{...}, washout.union{...})");
   }
+  if (lua_type(L, -1) != LUA_TSTRING)
+    fail(L, std::string(" a shape's 'kind' must be a string (\"box\", \"cylinder\", \"sphere\", "
+                        "\"union\"), got a ") +
+                luaL_typename(L, -1));
   const std::string kind = lua_tostring(L, -1);
   lua_pop(L, 1);
+  if (kind != "union" && kind != "box" && kind != "cylinder" && kind != "sphere")
+    fail(L, " unknown shape kind '" + kind + "' (box, cylinder, sphere, union)");
   if (kind == "union") {
     lua_getfield(L, index, "parts");
     Shape s = read_shape_list(L, lua_gettop(L), dim);
@@ -407,37 +424,27 @@ int l_fluid(lua_State* L) {
   return 0;
 }
 
-WallMotion make_motion(lua_State* L, int ref, std::string name) {
-  return [L, ref, name](double t, Vec3& displacement, Vec3& velocity) {
+// A moving wall's motion: t -> displacement {dx, dy[, dz]} and optionally its velocity, each
+// checked on every call (length, numbers, finite) so that a slip in the script is not read as 0.
+WallMotion make_motion(lua_State* L, int ref, std::string name, int dim) {
+  return [L, ref, name, dim](double t, Vec3& displacement, Vec3& velocity) {
     auto call = [&](double time, Vec3* vel) {
+      const std::string what = "motion of wall '" + name + "' at t = " + number_text(time);
       lua_rawgeti(L, LUA_REGISTRYINDEX, ref);
       lua_pushnumber(L, time);
-      if (lua_pcall(L, 1, 2, 0) != LUA_OK) {
-        std::string m = lua_tostring(L, -1);
-        lua_pop(L, 1);
-        throw SceneError("motion of wall '" + name + "' failed at t = " + std::to_string(time) +
-                         ": " + m);
-      }
-      Vec3 d = Vec3::Zero();
+      const int status = protected_call(L, 1, 2);
+      if (status != LUA_OK) throw SceneError(what + " failed: " + pop_error(L, status));
       bool has_velocity = false;
-      for (int slot = -2; slot <= -1; ++slot) {
-        if (!lua_istable(L, slot)) {
-          if (slot == -2)
-            throw SceneError("motion of wall '" + name +
-                             "' must return a displacement {dx, dy[, dz]}");
-          continue;
+      Vec3 d = Vec3::Zero();
+      try {
+        d = returned_vector(L, -2, dim, what + ": the displacement");
+        if (!lua_isnil(L, -1)) {
+          const Vec3 v = returned_vector(L, -1, dim, what + ": the velocity");
+          if (vel) *vel = v, has_velocity = true;
         }
-        Vec3 v = Vec3::Zero();
-        const lua_Integer n = luaL_len(L, slot);
-        for (lua_Integer k = 1; k <= std::min<lua_Integer>(n, 3); ++k) {
-          lua_geti(L, slot, k);
-          v[k - 1] = lua_tonumber(L, -1);
-          lua_pop(L, 1);
-        }
-        if (slot == -2)
-          d = v;
-        else if (vel)
-          *vel = v, has_velocity = true;
+      } catch (...) {
+        lua_pop(L, 2);
+        throw;
       }
       lua_pop(L, 2);
       return std::make_pair(d, has_velocity);
@@ -477,7 +484,7 @@ int add_wall(lua_State* L, bool moving) {
     if (!lua_isfunction(L, -1))
       fail(L, " washout.moving_wall: 'motion' must be a function of time");
     const int ref = luaL_ref(L, LUA_REGISTRYINDEX);
-    w.motion = make_motion(L, ref, w.name);
+    w.motion = make_motion(L, ref, w.name, b->dim());
   }
   model.walls.push_back(std::move(w));
   return 0;
@@ -678,11 +685,17 @@ class LuaCallbacks final : public RunObserver {
     lua_setfield(L, -2, "probes");
     push_body_states(L, sim);
     lua_setfield(L, -2, "bodies");
-    if (lua_pcall(L, 1, 0, 0) != LUA_OK) {
-      std::string m = lua_tostring(L, -1);
-      lua_pop(L, 1);
-      throw SceneError("scene callback failed: " + m);
-    }
+    const char* name = frame >= 0 ? "on_frame" : "on_step";
+    const int status = protected_call(L, 1, 1);
+    if (status != LUA_OK)
+      throw SceneError(std::string("the scene's ") + name + " callback failed at t = " +
+                       number_text(sim.time()) + ": " + pop_error(L, status));
+    // Nothing is read from a callback's result: anything but nil is a misunderstanding.
+    const bool returned_nothing = lua_isnil(L, -1);
+    lua_pop(L, 1);
+    if (!returned_nothing)
+      throw SceneError(std::string("the scene's ") + name +
+                       " callback must return nothing (end the run with washout.stop(reason))");
     return !b_->stop_requested;
   }
   LuaScene::Binding* b_;
@@ -690,8 +703,9 @@ class LuaCallbacks final : public RunObserver {
 
 }  // namespace
 
-LuaScene::LuaScene(const std::string& path, const Overrides& overrides)
-    : binding_(std::make_unique<Binding>()) {
+LuaScene::LuaScene(const std::string& path, const Overrides& overrides,
+                   const LuaLimitSettings& limits)
+    : limits_(std::make_unique<LuaLimits>()), binding_(std::make_unique<Binding>()) {
   std::ifstream file(path);
   if (!file) throw SceneError("cannot read scene file '" + path + "'", path);
   std::stringstream source;
@@ -700,7 +714,9 @@ LuaScene::LuaScene(const std::string& path, const Overrides& overrides)
   model_.scene_source = source.str();
   model_.scene_name = std::filesystem::path(path).stem().string();
 
-  L_ = luaL_newstate();
+  limits_->settings = limits;
+  L_ = new_limited_state(*limits_);
+  if (!L_) throw SceneError("cannot start Lua (out of memory)", path);
   luaL_openlibs(L_);
   binding_->scene = this;
   binding_->L = L_;
@@ -747,12 +763,14 @@ LuaScene::LuaScene(const std::string& path, const Overrides& overrides)
   lua_setglobal(L_, "washout");
 
   try {
+    int status = LUA_OK;
     auto run_protected = [&](lua_CFunction f) {
       if (f == nullptr)
-        return luaL_loadfile(L_, path.c_str()) == LUA_OK && lua_pcall(L_, 0, 0, 0) == LUA_OK;
+        return luaL_loadfile(L_, path.c_str()) == LUA_OK &&
+               (status = protected_call(L_, 0, 0)) == LUA_OK;
       lua_pushlightuserdata(L_, binding_.get());
       lua_pushcclosure(L_, f, 1);
-      return lua_pcall(L_, 0, 0, 0) == LUA_OK;
+      return (status = protected_call(L_, 0, 0)) == LUA_OK;
     };
     // The script, then (if it never called washout.parameters) the defaults with the overrides.
     const bool ok = run_protected(nullptr) &&
@@ -763,10 +781,10 @@ LuaScene::LuaScene(const std::string& path, const Overrides& overrides)
                      }));
     if (!ok) {
       if (binding_->pending) throw SceneError(*binding_->pending);
-      std::string m = lua_tostring(L_, -1);
-      lua_pop(L_, 1);
-      throw SceneError(m, path);
+      throw SceneError(pop_error(L_, status), path);
     }
+    check_probes(model_);
+    check_particle_budget(model_);
   } catch (...) {
     lua_close(L_);
     L_ = nullptr;

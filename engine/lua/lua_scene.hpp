@@ -8,6 +8,7 @@
 #include <utility>
 #include <vector>
 
+#include "engine/lua/lua_limits.hpp"
 #include "engine/lua/lua_validation.hpp"
 #include "engine/model/model.hpp"
 #include "engine/sim/simulation.hpp"
@@ -36,7 +37,9 @@ using Overrides = std::vector<std::pair<std::string, std::string>>;
 class LuaScene {
  public:
   // Runs the scene script with the --set overrides; throws SceneError on any mistake.
-  LuaScene(const std::string& path, const Overrides& overrides);
+  // `limits` bounds the memory and the time of the scene's Lua code (lua_limits.hpp).
+  LuaScene(const std::string& path, const Overrides& overrides,
+           const LuaLimitSettings& limits = {});
   ~LuaScene();
   LuaScene(const LuaScene&) = delete;
   LuaScene& operator=(const LuaScene&) = delete;
@@ -55,6 +58,7 @@ class LuaScene {
   struct Binding;
 
  private:
+  std::unique_ptr<LuaLimits> limits_;  // outlives L_, whose allocator uses it
   lua_State* L_ = nullptr;
   Model model_;
   FrameRequest frames_;

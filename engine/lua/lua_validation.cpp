@@ -5,6 +5,7 @@
 #include <lua.hpp>
 
 #include "engine/io/run_file_reader.hpp"
+#include "engine/lua/lua_errors.hpp"
 #include "engine/lua/lua_reading.hpp"
 
 namespace washout::lua {
@@ -206,8 +207,9 @@ std::vector<ValidationScore> SceneValidation::evaluate(lua_State* L,
     ValidationScore s = e.score;
     lua_rawgeti(L, LUA_REGISTRYINDEX, e.function_ref);
     push_run(L, r);
-    if (lua_pcall(L, 1, 1, 0) != LUA_OK) {
-      s.failure = lua_tostring(L, -1) ? lua_tostring(L, -1) : "error function failed";
+    if (const int status = detail::protected_call(L, 1, 1); status != LUA_OK) {
+      s.failure = detail::pop_error(L, status);
+      lua_pushnil(L);  // balances the pop below
     } else if (!lua_isnumber(L, -1)) {
       s.failure = "the error function of '" + s.name + "' returned no number";
     } else {
