@@ -332,6 +332,10 @@ int run_render_command(int argc, char** argv) {
   } catch (const io::RunFileError& e) {
     std::fprintf(stderr, "washout render: %s\n", e.what());
     return kExitBadInput;
+  } catch (const std::exception& e) {  // e.g. a frame too large to hold: never an abort
+    std::fprintf(stderr, "washout render: cannot read %s: %s\n", options.run_path.c_str(),
+                 e.what());
+    return kExitBadInput;
   }
 }
 

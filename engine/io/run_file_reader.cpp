@@ -3,6 +3,7 @@
 #include <hdf5.h>
 
 #include <algorithm>
+#include <cmath>
 #include <filesystem>
 
 namespace washout::io {
@@ -38,10 +39,36 @@ std::vector<T> read_all(hid_t file, const std::string& path, hid_t type, const s
 double read_double_attribute(hid_t object, const char* name, const std::string& where) {
   if (H5Aexists(object, name) <= 0) throw RunFileError(where + ": missing attribute " + name);
   hid_t attr = H5Aopen(object, name, H5P_DEFAULT);
+  hid_t space = H5Aget_space(attr);
+  const hssize_t n = H5Sget_simple_extent_npoints(space);
+  H5Sclose(space);
+  hid_t type = H5Aget_type(attr);
+  const bool numeric = H5Tget_class(type) == H5T_INTEGER || H5Tget_class(type) == H5T_FLOAT;
+  H5Tclose(type);
   double v = 0;
-  H5Aread(attr, H5T_NATIVE_DOUBLE, &v);
+  const herr_t status = numeric && n == 1 ? H5Aread(attr, H5T_NATIVE_DOUBLE, &v) : -1;
   H5Aclose(attr);
+  if (status < 0) throw RunFileError(where + ": attribute " + name + " is not a number");
   return v;
+}
+
+// The extent of a dataset, or a RunFileError if it is not a dataset.
+std::vector<hsize_t> dataset_dims(hid_t file, const std::string& path, const std::string& fname) {
+  hid_t set = H5Dopen2(file, path.c_str(), H5P_DEFAULT);
+  if (set < 0) throw RunFileError(fname + ": " + path + " is not a dataset");
+  hid_t space = H5Dget_space(set);
+  const int rank = H5Sget_simple_extent_ndims(space);
+  std::vector<hsize_t> dims(static_cast<std::size_t>(std::max(rank, 0)));
+  if (rank > 0) H5Sget_simple_extent_dims(space, dims.data(), nullptr);
+  H5Sclose(space);
+  H5Dclose(set);
+  return dims;
+}
+
+std::string dims_text(const std::vector<hsize_t>& dims) {
+  std::string t = "[";
+  for (std::size_t k = 0; k < dims.size(); ++k) t += (k ? ", " : "") + std::to_string(dims[k]);
+  return t + "]";
 }
 
 }  // namespace
@@ -69,8 +96,18 @@ RunFileReader::RunFileReader(const std::string& path) : path_(path) {
     throw RunFileError("cannot open run file '" + path + "' (missing or not HDF5)");
   file_ = H5Fopen(path.c_str(), H5F_ACC_RDONLY, H5P_DEFAULT);
   if (file_ < 0) throw RunFileError("cannot open run file '" + path + "'");
-  dim_ = static_cast<int>(read_double_attribute(file_, "dim", path));
+  const double dim = read_double_attribute(file_, "dim", path);
   d0_ = read_double_attribute(file_, "d0", path);
+  // Everything downstream divides by dim and scales by d0: refuse a file that lies about them.
+  if (dim != 2 && dim != 3) {
+    H5Fclose(file_);
+    throw RunFileError(path + ": attribute dim must be 2 or 3, got " + std::to_string(dim));
+  }
+  if (!(d0_ > 0) || !std::isfinite(d0_)) {
+    H5Fclose(file_);
+    throw RunFileError(path + ": attribute d0 must be a positive length");
+  }
+  dim_ = static_cast<int>(dim);
   if (exists(file_, "/frames")) {
     hid_t frames = H5Gopen2(file_, "/frames", H5P_DEFAULT);
     H5Literate(frames, H5_INDEX_NAME, H5_ITER_INC, nullptr, collect_name, &frame_names_);
@@ -102,16 +139,53 @@ FrameData RunFileReader::read_frame(std::size_t index) const {
   f.dim = dim_;
   f.d0 = d0_;
   hid_t g = H5Gopen2(file_, base.c_str(), H5P_DEFAULT);
-  f.time = read_double_attribute(g, "time", path_ + ":" + base);
-  f.step = static_cast<std::int64_t>(read_double_attribute(g, "step", path_ + ":" + base));
+  if (g < 0) throw RunFileError(path_ + ": " + base + " is not a group");
+  try {
+    f.time = read_double_attribute(g, "time", path_ + ":" + base);
+    f.step = static_cast<std::int64_t>(read_double_attribute(g, "step", path_ + ":" + base));
+  } catch (...) {
+    H5Gclose(g);
+    throw;
+  }
   H5Gclose(g);
+  if (!std::isfinite(f.time)) throw RunFileError(path_ + ": " + base + " time is not finite");
+  // Shapes first, before any read: every field holds one row per particle.
+  const std::string where = path_ + ":" + base;
+  if (!exists(file_, base + "/position")) throw RunFileError(where + ": no position dataset");
+  if (!exists(file_, base + "/kind")) throw RunFileError(where + ": no kind dataset");
+  const auto pdims = dataset_dims(file_, base + "/position", where);
+  if (pdims.size() != 2 || pdims[1] != static_cast<hsize_t>(dim_))
+    throw RunFileError(where + "/position has shape " + dims_text(pdims) + ", expected [N, " +
+                       std::to_string(dim_) + "]");
+  const hsize_t n = pdims[0];
+  auto expect = [&](const char* field, std::size_t rank) {
+    const std::string p = base + "/" + field;
+    if (!exists(file_, p)) return;
+    const auto d = dataset_dims(file_, p, where);
+    const bool ok = d.size() == rank && d[0] == n && (rank == 1 || d[1] == hsize_t(dim_));
+    if (!ok)
+      throw RunFileError(where + "/" + field + " has shape " + dims_text(d) + ", expected [" +
+                         std::to_string(n) + (rank == 2 ? ", " + std::to_string(dim_) : "") +
+                         "] like position");
+  };
+  expect("velocity", 2);
+  expect("pressure", 1);
+  expect("kind", 1);
+  expect("id", 1);
+  expect("body", 1);
   f.position = read_all<double>(file_, base + "/position", H5T_NATIVE_DOUBLE, path_);
-  f.count = f.position.size() / dim_;
+  f.count = static_cast<std::size_t>(n);
+  for (double x : f.position)
+    if (!std::isfinite(x)) throw RunFileError(where + "/position holds a non-finite value");
   if (exists(file_, base + "/velocity"))
     f.velocity = read_all<double>(file_, base + "/velocity", H5T_NATIVE_DOUBLE, path_);
   if (exists(file_, base + "/pressure"))
     f.pressure = read_all<double>(file_, base + "/pressure", H5T_NATIVE_DOUBLE, path_);
   f.kind = read_all<std::uint8_t>(file_, base + "/kind", H5T_NATIVE_UINT8, path_);
+  for (std::uint8_t k : f.kind)
+    if (k > 3)
+      throw RunFileError(where + "/kind holds " + std::to_string(k) +
+                         " (kinds: 0 fluid, 1 fixed wall, 2 moving wall, 3 rigid body)");
   if (exists(file_, base + "/id"))
     f.id = read_all<std::uint64_t>(file_, base + "/id", H5T_NATIVE_UINT64, path_);
   if (exists(file_, base + "/body"))
@@ -122,8 +196,8 @@ FrameData RunFileReader::read_frame(std::size_t index) const {
 bool RunFileReader::has(const std::string& object_path) const { return exists(file_, object_path); }
 
 bool RunFileReader::has_attribute(const std::string& object, const std::string& name) const {
-  return exists(file_, object) && H5Aexists_by_name(file_, object.c_str(), name.c_str(),
-                                                    H5P_DEFAULT) > 0;
+  return exists(file_, object) &&
+         H5Aexists_by_name(file_, object.c_str(), name.c_str(), H5P_DEFAULT) > 0;
 }
 
 std::vector<std::string> RunFileReader::children(const std::string& group) const {
@@ -153,6 +227,34 @@ std::string RunFileReader::string_attribute(const std::string& name,
   H5Tclose(memory_type);
   H5Tclose(type);
   H5Aclose(attr);
+  while (!value.empty() && value.back() == '\0') value.pop_back();
+  return value;
+}
+
+std::string RunFileReader::scene_source() const {
+  if (!exists(file_, "/scene_source")) return string_attribute("scene_source");
+  hid_t set = H5Dopen2(file_, "/scene_source", H5P_DEFAULT);
+  if (set < 0) throw RunFileError(path_ + ": cannot open /scene_source");
+  hid_t type = H5Dget_type(set);
+  const std::size_t size = H5Tget_class(type) == H5T_STRING ? H5Tget_size(type) : 0;
+  hid_t space = H5Dget_space(set);
+  const bool scalar = H5Sget_simple_extent_type(space) == H5S_SCALAR;
+  H5Sclose(space);
+  if (size == 0 || !scalar || H5Tis_variable_str(type) > 0) {
+    H5Tclose(type);
+    H5Dclose(set);
+    throw RunFileError(path_ + ": /scene_source is not a text");
+  }
+  std::string value(size, '\0');
+  hid_t memory_type = H5Tcopy(H5T_C_S1);
+  H5Tset_size(memory_type, size);
+  H5Tset_strpad(memory_type, H5T_STR_NULLPAD);
+  H5Tset_cset(memory_type, H5Tget_cset(type));
+  const herr_t status = H5Dread(set, memory_type, H5S_ALL, H5S_ALL, H5P_DEFAULT, value.data());
+  H5Tclose(memory_type);
+  H5Tclose(type);
+  H5Dclose(set);
+  if (status < 0) throw RunFileError(path_ + ": cannot read /scene_source");
   while (!value.empty() && value.back() == '\0') value.pop_back();
   return value;
 }

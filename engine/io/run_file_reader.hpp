@@ -52,7 +52,9 @@ class RunFileReader {
   bool has_attribute(const std::string& object, const std::string& name) const;
   // The names of a group's members, sorted (empty if the group does not exist).
   std::vector<std::string> children(const std::string& group) const;
-  double double_attribute(const std::string& name) const;       // root attribute
+  double double_attribute(const std::string& name) const;  // root attribute
+  // The scene script's text: the /scene_source dataset, or the root attribute of older files.
+  std::string scene_source() const;
   // A whole dataset as doubles, flattened row-major, e.g. "/stats/time", "/bodies/g/position".
   std::vector<double> read_doubles(const std::string& dataset_path) const;
   std::vector<std::size_t> shape(const std::string& dataset_path) const;

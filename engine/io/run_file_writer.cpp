@@ -38,6 +38,26 @@ void write_string_attribute(hid_t object, const std::string& name, const std::st
   H5Tclose(type);
 }
 
+// A text of any size as a scalar string dataset: attributes stored in the object header are
+// limited to 64 KiB, a scene script is not.
+void write_string_dataset(hid_t object, const std::string& name, const std::string& value) {
+  hid_t type = H5Tcopy(H5T_C_S1);
+  H5Tset_size(type, value.empty() ? 1 : value.size());
+  H5Tset_strpad(type, H5T_STR_NULLPAD);
+  H5Tset_cset(type, H5T_CSET_UTF8);
+  hid_t space = H5Screate(H5S_SCALAR);
+  hid_t set = H5Dcreate2(object, name.c_str(), type, space, H5P_DEFAULT, H5P_DEFAULT, H5P_DEFAULT);
+  check(set, "create dataset " + name);
+  check(H5Dwrite(set, type, H5S_ALL, H5S_ALL, H5P_DEFAULT, value.empty() ? "" : value.data()),
+        "write dataset " + name);
+  H5Dclose(set);
+  H5Sclose(space);
+  H5Tclose(type);
+}
+
+// The largest text kept as an attribute as well, below HDF5's 64 KiB header-message limit.
+constexpr std::size_t kMaxTextAttribute = 60000;
+
 template <class T>
 void write_dataset(hid_t group, const std::string& name, hid_t type, const std::vector<T>& data,
                    std::size_t rows, std::size_t columns) {
@@ -45,7 +65,8 @@ void write_dataset(hid_t group, const std::string& name, hid_t type, const std::
   hid_t space = H5Screate_simple(columns > 1 ? 2 : 1, dims, nullptr);
   hid_t set = H5Dcreate2(group, name.c_str(), type, space, H5P_DEFAULT, H5P_DEFAULT, H5P_DEFAULT);
   check(set, "create dataset " + name);
-  if (rows > 0) check(H5Dwrite(set, type, H5S_ALL, H5S_ALL, H5P_DEFAULT, data.data()), "write " + name);
+  if (rows > 0)
+    check(H5Dwrite(set, type, H5S_ALL, H5S_ALL, H5P_DEFAULT, data.data()), "write " + name);
   H5Dclose(set);
   H5Sclose(space);
 }
@@ -62,7 +83,9 @@ RunFileWriter::RunFileWriter(const std::string& path, const RunHeader& header)
   if (file_ < 0) throw OutputError("cannot create output file '" + path + "'");
   write_string_attribute(file_, "washout_version", WASHOUT_VERSION);
   write_string_attribute(file_, "scene_name", header.scene_name);
-  write_string_attribute(file_, "scene_source", header.scene_source);
+  write_string_dataset(file_, "scene_source", header.scene_source);
+  if (header.scene_source.size() <= kMaxTextAttribute)  // for readers of older files
+    write_string_attribute(file_, "scene_source", header.scene_source);
   write_string_attribute(file_, "parameters", header.parameters_json);
   const std::int32_t dim = header.dim;
   write_attribute(file_, "dim", H5T_NATIVE_INT32, &dim);
@@ -147,8 +170,8 @@ void RunFileWriter::write_frame(const ParticleView& view, std::int64_t step,
 
 namespace {
 template <class T>
-void append_rows(hid_t file, long long group_id, const std::string& name, hid_t type,
-                 const T* rows, std::size_t row_count, std::size_t columns) {
+void append_rows(hid_t file, long long group_id, const std::string& name, hid_t type, const T* rows,
+                 std::size_t row_count, std::size_t columns) {
   const int rank = columns > 1 ? 2 : 1;
   hid_t set;
   hsize_t old_rows = 0;
@@ -231,7 +254,8 @@ void RunFileWriter::write_xdmf() const {
         << "    <Topology TopologyType=\"Polyvertex\" NumberOfElements=\"" << f.count << "\"/>\n"
         << "    <Geometry GeometryType=\"" << geometry << "\">\n"
         << "     <DataItem Dimensions=\"" << f.count << " " << dim_
-        << "\" NumberType=\"Float\" Precision=\"8\" Format=\"HDF\">" << base << "position</DataItem>\n"
+        << "\" NumberType=\"Float\" Precision=\"8\" Format=\"HDF\">" << base
+        << "position</DataItem>\n"
         << "    </Geometry>\n";
     if (f.has_velocity)
       out << "    <Attribute Name=\"velocity\" AttributeType=\"Vector\" Center=\"Node\">\n"
