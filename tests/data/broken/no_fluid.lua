@@ -1,0 +1,2 @@
+-- Broken on purpose (tests/data/broken/manifest.txt).
+washout.parameters { dim = 2 }

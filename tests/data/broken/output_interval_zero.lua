@@ -1,0 +1,3 @@
+-- Broken on purpose (tests/data/broken/manifest.txt).
+local P = washout.parameters { dim = 2, d0 = 0.02, output_interval = 0 }
+washout.fluid { washout.box { min = { 0, 0 }, max = { 0.1, 0.1 } } }
