@@ -20,5 +20,6 @@ local W, H = P.tank_width, P.water_height
 washout.fluid { washout.box { min = { 0, 0 }, max = { W, H } } }
 washout.wall { tank.open_box(P, { min = { 0, 0 }, max = { W, 1.5 * H } }), name = "tank" }
 washout.probe { name = "bottom_pressure", quantity = "pressure", at = { W / 2, 0.1 * H } }
--- Bounds: the first-order surface offset d0/(2H) plus noise at d0 = H/10 to H/40.
-validation.hydrostatic(P, H, { 0, W }, { pressure = 0.07, floor_force = 0.05 })
+-- Bounds: P = 0 is imposed at the surface (docs/method.md); measured after 0.5 s at d0 = H/10,
+-- H/20, H/40: pressure 0.45 %, 0.27 %, 0.18 %, floor force the same. 0.6 % leaves a margin.
+validation.hydrostatic(P, H, { 0, W }, { pressure = 0.006, floor_force = 0.006 })

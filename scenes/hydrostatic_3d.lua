@@ -21,4 +21,7 @@ local L, B, H = P.tank_length, P.tank_width, P.water_height
 washout.fluid { washout.box { min = { 0, 0, 0 }, max = { L, B, H } } }
 washout.wall { tank.open_box(P, { min = { 0, 0, 0 }, max = { L, B, 1.5 * H } }), name = "tank" }
 washout.probe { name = "bottom_pressure", quantity = "pressure", at = { L / 2, B / 2, 0.1 * H } }
-validation.hydrostatic(P, H, { 0, 0, L, B }, { pressure = 0.1, floor_force = 0.05 })
+-- Bounds: measured at t = 0.1 s for d0 = H/10, H/14, H/20: pressure 0.32 %, 0.22 %, 0.15 %,
+-- floor force 0.32 % at H/10; 0.5 % leaves a margin (3D still water is disturbed later,
+-- docs/method.md).
+validation.hydrostatic(P, H, { 0, 0, L, B }, { pressure = 0.005, floor_force = 0.005 })

@@ -6,32 +6,10 @@ convergence order fitted (least squares of log error on log d0).
 usage: plot_study.py STUDY.csv [OUT.png]   (default: study.png beside the CSV)
 """
 import csv
-import math
 import os
 import sys
 
-
-def number(text):
-    try:
-        v = float(text)
-        return v if math.isfinite(v) else None
-    except (TypeError, ValueError):
-        return None
-
-
-def fit_order(points):
-    """Slope p of log(error) = p log(d0) + c, or None with fewer than two points."""
-    if len(points) < 2:
-        return None
-    xs = [math.log(d) for d, _ in points]
-    ys = [math.log(e) for _, e in points]
-    n = len(xs)
-    mx, my = sum(xs) / n, sum(ys) / n
-    sxx = sum((x - mx) ** 2 for x in xs)
-    if sxx == 0:
-        return None
-    p = sum((x - mx) * (y - my) for x, y in zip(xs, ys)) / sxx
-    return p, math.exp(my - p * mx)
+from study_fit import fit_order, number
 
 
 def main():

@@ -232,8 +232,10 @@ end
 -- Case: water at rest of depth H over a floor at vertical coordinate 0 between lo and hi
 -- (the horizontal extent of the tank's inside, {x0, x1} in 2D, {x0, y0, x1, y1} in 3D).
 -- "pressure": RMS over fluid particles deeper than 3 d0 of (P - rho g (H - z)) / (rho g H) in
--- the last frame. "floor_force": abs(F - W) / W, F the sum of the floor's top particle layer's
--- pressure times its area d0^(dim-1), W the water's weight rho g H times the floor area.
+-- the last frame. "floor_force": abs(F - W) / W, F the sum over the floor's top particle layer
+-- of its pressure carried up to the floor's surface (the layer sits d0/2 below it, so
+-- P_surface = P - rho g d0/2) times its area d0^(dim-1), W the water's weight rho g H times
+-- the floor area.
 function validation.hydrostatic(P, H, extent, bounds)
   local g, rho = validation.g(P), P.rho0
   local up = P.dim
@@ -250,7 +252,7 @@ function validation.hydrostatic(P, H, extent, bounds)
   }
   washout.validation {
     name = "floor_force",
-    metric = "abs(F_floor - W) / W, F_floor from the floor's top wall layer, last frame",
+    metric = "abs(F_floor - W) / W, F_floor from the floor's top wall layer's pressure at the floor surface, last frame",
     reference = "the water's weight rho g H A (analytic)",
     bound = bounds and bounds.floor_force,
     error = function(run)
@@ -265,7 +267,7 @@ function validation.hydrostatic(P, H, extent, bounds)
         for a = 1, P.dim - 1 do
           inside = inside and x[a] > extent[a] and x[a] < extent[P.dim - 1 + a]
         end
-        if inside then force = force + f.pressure[p] * area end
+        if inside then force = force + (f.pressure[p] - rho * g * 0.5 * P.d0) * area end
       end
       local weight = rho * g * H * floor_area
       return math.abs(force - weight) / weight

@@ -7,29 +7,10 @@ usage: validation_report.py OUT.md MODE CASE_DIR... (MODE: quick or full; each C
        study.csv and case.txt: "name|dim|scene|what")
 """
 import csv
-import math
 import os
 import sys
 
-
-def number(text):
-    try:
-        v = float(text)
-        return v if math.isfinite(v) else None
-    except (TypeError, ValueError):
-        return None
-
-
-def order(points):
-    """Least-squares slope of log(error) on log(d0); None with fewer than two points."""
-    pts = [(d, e) for d, e in points if d and e and e > 0]
-    if len(pts) < 2:
-        return None
-    xs = [math.log(d) for d, _ in pts]
-    ys = [math.log(e) for _, e in pts]
-    mx, my = sum(xs) / len(xs), sum(ys) / len(ys)
-    sxx = sum((x - mx) ** 2 for x in xs)
-    return sum((x - mx) * (y - my) for x, y in zip(xs, ys)) / sxx if sxx else None
+from study_fit import fit_order, number
 
 
 def fmt(v, spec=".3g"):
@@ -60,7 +41,8 @@ def main():
         for column, bound_column in scores:
             label = primary_name if column == "error" else column[len("error_"):]
             pts = [(number(r["d0"]), number(r[column])) for r in rows if r["status"] == "ok"]
-            p = order(pts)
+            fit = fit_order(pts)
+            p = fit[0] if fit else None
             ok_pts = sorted([x for x in pts if x[0] and x[1] is not None], reverse=True)
             converging = (p is not None and p > 0 and ok_pts[-1][1] < ok_pts[0][1])
             if p is not None and not converging:
