@@ -22,9 +22,16 @@ std::string clock_text(double seconds) {
 void ProgressDisplay::on_start(const Simulation& sim) {
   start_ = last_print_ = std::chrono::steady_clock::now();
   const auto& p = sim.particles();
-  std::fprintf(out_, "washout %s: %s, %dD, %zu fluid + %zu boundary particles, d0 = %g m, h = %g m\n",
+  std::fprintf(out_,
+               "washout %s: %s, %dD, %zu fluid + %zu boundary particles, d0 = %g m, h = %g m\n",
                WASHOUT_VERSION, sim.model().scene_name.c_str(), p.dim, p.fluid_count,
                p.size() - p.fluid_count, sim.params().d0, sim.context().h);
+  std::string stages;
+  for (const Stage stage : sim.plan()) {
+    if (!stages.empty()) stages += ", ";
+    stages += stage_name(stage);
+  }
+  std::fprintf(out_, "  step: %s\n", stages.c_str());
   std::fflush(out_);
 }
 
@@ -33,10 +40,10 @@ void ProgressDisplay::print_line(const Simulation& sim, const StepReport& r, boo
       std::chrono::duration<double>(std::chrono::steady_clock::now() - start_).count();
   const double end = sim.params().end_time;
   const double eta = sim.time() > 0 ? elapsed * (end - sim.time()) / sim.time() : NAN;
-  std::fprintf(out_, "%st = %.4f / %.4f s  step %ld  dt %.2e s  PPE %d it (res %.1e)  wall %s  ETA %s%s",
-               newline ? "" : "\r", sim.time(), end, sim.step_count(), r.dt, r.ppe_iterations,
-               r.ppe_residual, clock_text(elapsed).c_str(), clock_text(eta).c_str(),
-               newline ? "\n" : "   ");
+  std::fprintf(
+      out_, "%st = %.4f / %.4f s  step %ld  dt %.2e s  PPE %d it (res %.1e)  wall %s  ETA %s%s",
+      newline ? "" : "\r", sim.time(), end, sim.step_count(), r.dt, r.ppe_iterations,
+      r.ppe_residual, clock_text(elapsed).c_str(), clock_text(eta).c_str(), newline ? "\n" : "   ");
   std::fflush(out_);
 }
 

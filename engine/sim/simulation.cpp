@@ -117,6 +117,22 @@ Simulation::Simulation(Model model)
     set_wall_position(wall, particles_);
   }
   probe_values_.assign(model_.probes.size(), 0.0);
+
+  // Modes resolved once from the parameters, and the step composed from what the scene uses.
+  ghost_surface_ = prm.surface_pressure == "ghost";
+  symmetric_gradient_ = prm.pressure_gradient == "symmetric";
+  solver_choice_ = prm.solver == "cholmod" ? SolverChoice::cholmod
+                   : prm.solver == "pcg"   ? SolverChoice::pcg
+                                           : SolverChoice::automatic;
+  SceneFeatures features;
+  features.bodies = bodies_ != nullptr;
+  features.dynamic_wall = work_.dynamic_wall;
+  features.turbulence = prm.turbulence == "smagorinsky";
+  features.wall_friction = prm.wall_friction == "log_law";
+  features.shifting = prm.shifting > 0 || prm.shifting_with_speed > 0;
+  features.moving_walls = !moving_walls_.empty();
+  features.probes = !model_.probes.empty();
+  plan_ = compose_step(features);
 }
 
 Simulation::~Simulation() = default;
@@ -146,133 +162,141 @@ StepReport Simulation::step() { return step_until(std::numeric_limits<double>::i
 StepReport Simulation::step_until(double until) {
   const auto& prm = model_.params;
   const auto wall_start = std::chrono::steady_clock::now();
-  StepReport report;
-  const double dt = choose_time_step(until);
-  if (prm.dt == 0 && dt < prm.dt_min)
-    throw UnstableError("the adaptive time step fell to " + std::to_string(dt) +
+  StepInProgress now;
+  now.dt = choose_time_step(until);
+  if (prm.dt == 0 && now.dt < prm.dt_min)
+    throw UnstableError("the adaptive time step fell to " + std::to_string(now.dt) +
                         " s, below dt_min = " + std::to_string(prm.dt_min) + " s");
-  const double t_new = time_ + dt;
-  {
-    auto s = timer_.measure("neighbours");
-    grid_.build(particles_, 2.0 * ctx_.h, ctx_.periodic);
-    grid_.build_list(particles_, particles_.fluid_count, 2.0 * ctx_.h, neighbors_);
+  now.t_new = time_ + now.dt;
+  for (const Stage stage : plan_) {
+    auto timing = timer_.measure(stage_name(stage));
+    run_stage(stage, now);
   }
-  {
-    auto s = timer_.measure("density");
-    compute_summation_density(ctx_, neighbors_, particles_);
-    report.free_surface_particles =
-        detect_free_surface(ctx_, neighbors_, particles_, prm.free_surface_threshold, work_);
-  }
-  {
-    auto s = timer_.measure("wall_markers");
-    mark_active_boundary(neighbors_, particles_, active_boundary_);
-    update_marker_velocities(ctx_, grid_, particles_, active_boundary_, work_);
-    if (bodies_ && work_.dynamic_wall) {
-      report.squeeze_film_particles = mark_squeeze_film(ctx_, neighbors_, particles_, work_);
-      set_film_pressure(ctx_, neighbors_, particles_, prm.gravity, work_);
-    }
-  }
-  if (prm.turbulence == "smagorinsky") {
-    auto s = timer_.measure("turbulence");
-    compute_eddy_viscosity(ctx_, neighbors_, particles_, prm.smagorinsky_constant, work_);
-  }
-  {
-    auto s = timer_.measure("predictor");
-    predict_velocity(ctx_, neighbors_, particles_, prm.viscosity, prm.gravity, dt, work_);
-  }
-  if (prm.wall_friction == "log_law") {
-    auto s = timer_.measure("wall_shear");
-    apply_wall_shear(ctx_, neighbors_, particles_, prm.viscosity, dt, work_);
-  }
-  if (!moving_walls_.empty()) {
-    auto s = timer_.measure("moving_walls");
-    for (auto& wall : moving_walls_) {
-      if (!evaluate_wall_motion(wall, t_new))
-        throw UnstableError("the motion of wall '" + model_.walls[wall.wall_index].name +
-                            "' is not finite at t = " + std::to_string(t_new));
-      set_wall_velocity(wall, particles_);
-    }
-  }
-  if (bodies_) bodies_->set_prescribed_velocities(t_new, particles_);
-  if (work_.dynamic_wall)
-    update_wall_accelerations(particles_, solved_bodies_, dt, previous_wall_velocity_, work_);
-  PpeStatistics ppe;
-  {
-    auto s = timer_.measure("ppe_assembly");
-    ppe = assemble_pressure_poisson(ctx_, neighbors_, particles_, prm.gravity, prm.alpha, dt,
-                                    prm.surface_pressure == "ghost", work_);
-  }
-  {
-    auto s = timer_.measure("ppe_solve");
-    const bool direct =
-        prm.solver == "cholmod" || (prm.solver == "auto" && prm.dim == 2 && ppe.unknowns <= 60000);
-    const std::string wanted = direct ? "cholmod" : "pcg";
-    if (!solver_ || solver_->name() != wanted)
-      solver_ = direct ? make_cholmod_solver()
-                       : make_pcg_solver(prm.solver_tolerance, prm.solver_max_iterations);
-    gather_pressure_guess(particles_, work_);
-    SolveReport solve;
-    try {
-      solve = solver_->solve(work_.matrix, work_.rhs, work_.solution);
-    } catch (const SolverError& e) {
-      throw UnstableError(std::string("pressure solve failed: ") + e.what());
-    }
-    if (!solve.converged)
-      throw UnstableError("the pressure solver did not converge in " +
-                          std::to_string(solve.iterations) + " iterations (residual " +
-                          std::to_string(solve.relative_residual) + ")");
-    scatter_pressure(work_, particles_);
-    report.ppe_iterations = solve.iterations;
-    report.ppe_residual = solve.relative_residual;
-    report.ppe_unknowns = ppe.unknowns;
-    total_ppe_iterations_ += solve.iterations;
-  }
-  if (bodies_) {
-    // P^{n+1} belongs to the positions x^n: take the body loads before the fluid moves.
-    auto s = timer_.measure("body_loads");
-    if (work_.dynamic_wall) {
-      const CouplingReport coupling = coupling_.couple(ctx_, neighbors_, grid_, particles_, work_,
-                                                       *solver_, *bodies_, prm.gravity, dt);
-      total_ppe_iterations_ += coupling.iterations;
-    } else {
-      bodies_->compute_fluid_loads(ctx_, grid_, particles_, prm.gravity);
-    }
-  }
-  {
-    auto s = timer_.measure("corrector");
-    max_speed_ = correct_and_advect(ctx_, neighbors_, particles_, work_, prm.gravity, dt,
-                                    prm.pressure_gradient == "symmetric", prm.surface_smoothing,
-                                    shift_scratch_);
-  }
-  if (prm.shifting > 0 || prm.shifting_with_speed > 0) {
-    auto s = timer_.measure("shifting");
-    shift_particles(ctx_, neighbors_, particles_, work_, prm.shifting, prm.shifting_with_speed, dt,
-                    shift_scratch_);
-  }
-  for (auto& wall : moving_walls_) set_wall_position(wall, particles_);
-  if (bodies_) {
-    auto s = timer_.measure("bodies");
-    report.substeps = bodies_->advance(time_, dt, prm.gravity, particles_);
-  }
-  time_ = t_new;
-  ++step_;
-  report.step = step_;
-  report.time = time_;
-  report.dt = dt;
-  report.max_speed = max_speed_;
-  {
-    auto s = timer_.measure("checks");
-    check_health(report);
-  }
-  if (!model_.probes.empty()) {
-    auto s = timer_.measure("probes");
-    evaluate_probes();
-  }
+  StepReport& report = now.report;
   report.wall_seconds =
       last_report_.wall_seconds +
       std::chrono::duration<double>(std::chrono::steady_clock::now() - wall_start).count();
   last_report_ = report;
   return report;
+}
+
+void Simulation::run_stage(Stage stage, StepInProgress& now) {
+  const auto& prm = model_.params;
+  const double dt = now.dt;
+  StepReport& report = now.report;
+  switch (stage) {
+    case Stage::neighbours:
+      grid_.build(particles_, 2.0 * ctx_.h, ctx_.periodic);
+      grid_.build_list(particles_, particles_.fluid_count, 2.0 * ctx_.h, neighbors_);
+      return;
+    case Stage::density:
+      compute_summation_density(ctx_, neighbors_, particles_);
+      report.free_surface_particles =
+          detect_free_surface(ctx_, neighbors_, particles_, prm.free_surface_threshold, work_);
+      return;
+    case Stage::wall_markers:
+      mark_active_boundary(neighbors_, particles_, active_boundary_);
+      update_marker_velocities(ctx_, grid_, particles_, active_boundary_, work_);
+      return;
+    case Stage::squeeze_film:
+      report.squeeze_film_particles = mark_squeeze_film(ctx_, neighbors_, particles_, work_);
+      set_film_pressure(ctx_, neighbors_, particles_, prm.gravity, work_);
+      return;
+    case Stage::turbulence:
+      compute_eddy_viscosity(ctx_, neighbors_, particles_, prm.smagorinsky_constant, work_);
+      return;
+    case Stage::predictor:
+      predict_velocity(ctx_, neighbors_, particles_, prm.viscosity, prm.gravity, dt, work_);
+      return;
+    case Stage::wall_shear:
+      apply_wall_shear(ctx_, neighbors_, particles_, prm.viscosity, dt, work_);
+      return;
+    case Stage::moving_walls:
+      for (auto& wall : moving_walls_) {
+        if (!evaluate_wall_motion(wall, now.t_new))
+          throw UnstableError("the motion of wall '" + model_.walls[wall.wall_index].name +
+                              "' is not finite at t = " + std::to_string(now.t_new));
+        set_wall_velocity(wall, particles_);
+      }
+      return;
+    case Stage::prescribed_bodies:
+      bodies_->set_prescribed_velocities(now.t_new, particles_);
+      return;
+    case Stage::wall_accelerations:
+      update_wall_accelerations(particles_, solved_bodies_, dt, previous_wall_velocity_, work_);
+      return;
+    case Stage::ppe_assembly:
+      now.ppe = assemble_pressure_poisson(ctx_, neighbors_, particles_, prm.gravity, prm.alpha, dt,
+                                          ghost_surface_, work_);
+      return;
+    case Stage::ppe_solve:
+      solve_pressure(now);
+      return;
+    case Stage::body_loads:
+      if (work_.dynamic_wall) {
+        const CouplingReport coupling = coupling_.couple(ctx_, neighbors_, grid_, particles_, work_,
+                                                         *solver_, *bodies_, prm.gravity, dt);
+        total_ppe_iterations_ += coupling.iterations;
+      } else {
+        bodies_->compute_fluid_loads(ctx_, grid_, particles_, prm.gravity);
+      }
+      return;
+    case Stage::corrector:
+      max_speed_ = correct_and_advect(ctx_, neighbors_, particles_, work_, prm.gravity, dt,
+                                      symmetric_gradient_, prm.surface_smoothing, shift_scratch_);
+      return;
+    case Stage::shifting:
+      shift_particles(ctx_, neighbors_, particles_, work_, prm.shifting, prm.shifting_with_speed,
+                      dt, shift_scratch_);
+      return;
+    case Stage::wall_positions:
+      for (auto& wall : moving_walls_) set_wall_position(wall, particles_);
+      return;
+    case Stage::bodies:
+      report.substeps = bodies_->advance(time_, dt, prm.gravity, particles_);
+      return;
+    case Stage::clock:
+      time_ = now.t_new;
+      ++step_;
+      report.step = step_;
+      report.time = time_;
+      report.dt = dt;
+      report.max_speed = max_speed_;
+      return;
+    case Stage::checks:
+      check_health(report);
+      return;
+    case Stage::probes:
+      evaluate_probes();
+      return;
+  }
+}
+
+void Simulation::solve_pressure(StepInProgress& now) {
+  const auto& prm = model_.params;
+  const bool direct =
+      solver_choice_ == SolverChoice::cholmod ||
+      (solver_choice_ == SolverChoice::automatic && prm.dim == 2 && now.ppe.unknowns <= 60000);
+  const char* wanted = direct ? "cholmod" : "pcg";
+  if (!solver_ || solver_->name() != wanted)
+    solver_ = direct ? make_cholmod_solver()
+                     : make_pcg_solver(prm.solver_tolerance, prm.solver_max_iterations);
+  gather_pressure_guess(particles_, work_);
+  SolveReport solve;
+  try {
+    solve = solver_->solve(work_.matrix, work_.rhs, work_.solution);
+  } catch (const SolverError& e) {
+    throw UnstableError(std::string("pressure solve failed: ") + e.what());
+  }
+  if (!solve.converged)
+    throw UnstableError("the pressure solver did not converge in " +
+                        std::to_string(solve.iterations) + " iterations (residual " +
+                        std::to_string(solve.relative_residual) + ")");
+  scatter_pressure(work_, particles_);
+  now.report.ppe_iterations = solve.iterations;
+  now.report.ppe_residual = solve.relative_residual;
+  now.report.ppe_unknowns = now.ppe.unknowns;
+  total_ppe_iterations_ += solve.iterations;
 }
 
 void Simulation::check_health(StepReport& report) {

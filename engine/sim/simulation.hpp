@@ -11,10 +11,12 @@
 #include "engine/boundary/moving_walls.hpp"
 #include "engine/core/neighbor_grid.hpp"
 #include "engine/fluid/fluid_work.hpp"
+#include "engine/fluid/isph_stages.hpp"
 #include "engine/fluid/sph_context.hpp"
 #include "engine/model/model.hpp"
 #include "engine/sim/implicit_body_coupling.hpp"
 #include "engine/sim/stage_timer.hpp"
+#include "engine/sim/step_plan.hpp"
 #include "engine/solvers/linear_solver.hpp"
 
 namespace washout {
@@ -106,6 +108,8 @@ class Simulation {
   const StageTimer& timer() const { return timer_; }
   const std::vector<double>& probe_values() const { return probe_values_; }
   const StepReport& last_report() const { return last_report_; }
+  // The stages of one step, in order, as composed from the scene (step_plan.hpp).
+  const std::vector<Stage>& plan() const { return plan_; }
   // The rigid bodies and their coupling; null when the scene has none.
   const RigidBodySystem* bodies() const { return bodies_.get(); }
 
@@ -122,6 +126,14 @@ class Simulation {
  private:
   double choose_time_step(double until) const;
   void check_health(StepReport& report);
+  // One step's values shared by its stages.
+  struct StepInProgress {
+    double dt = 0.0, t_new = 0.0;
+    StepReport report;
+    PpeStatistics ppe;
+  };
+  void run_stage(Stage stage, StepInProgress& now);
+  void solve_pressure(StepInProgress& now);
   // The motion of wall w if it moves, else nullptr (its shape then sits where it was built).
   const MovingWall* motion_of_wall(std::size_t w) const;
   // Signed distance of x from the nearest wall or body (negative inside one).
@@ -149,6 +161,10 @@ class Simulation {
   std::vector<std::uint8_t> trapped_;  // fluid caught in a closing gap this step
   std::vector<double> shift_scratch_;
   StageTimer timer_;
+  // The step composed from the scene (step_plan.hpp) and the modes it runs in.
+  std::vector<Stage> plan_;
+  enum class SolverChoice { automatic, cholmod, pcg } solver_choice_ = SolverChoice::automatic;
+  bool ghost_surface_ = true, symmetric_gradient_ = true;
   double time_ = 0.0;
   long step_ = 0;
   double max_speed_ = 0.0;

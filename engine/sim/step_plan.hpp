@@ -1,0 +1,50 @@
+#pragma once
+// The step composed from the scene (docs/method.md "One step"): the list of stages a scene
+// needs, built once when the simulation is made, run in order every step. A stage the scene
+// does not need is not in the list: no bodies, no body or contact stage; no turbulence model,
+// no eddy viscosity; no moving wall, no wall motion; no probe, no probe evaluation.
+#include <cstdint>
+#include <vector>
+
+namespace washout {
+
+enum class Stage : std::uint8_t {
+  neighbours,          // cell linked list and neighbour lists (METHOD.md "Neighbour search")
+  density,             // summation density and free-surface detection
+  wall_markers,        // virtual-marker velocities of the walls in reach of the fluid
+  squeeze_film,        // closing gaps between a dynamic body and another solid
+  turbulence,          // Smagorinsky eddy viscosity
+  predictor,           // step 1: u* = u + dt (nu lap u + div tau / rho0 + g)
+  wall_shear,          // law-of-the-wall stress on the first fluid layer (optional)
+  moving_walls,        // prescribed wall velocities at t + dt
+  prescribed_bodies,   // bodies whose motion the scene prescribes
+  wall_accelerations,  // the walls' normal accelerations for the dynamic wall condition
+  ppe_assembly,        // step 2: the stabilized PPE
+  ppe_solve,           //         and its solution
+  body_loads,          // pressure loads on the bodies (solved with them when dynamic)
+  corrector,           // steps 3 and 4: u = u* - dt/rho0 grad P, x += dt u
+  shifting,            // Fickian particle shifting
+  wall_positions,      // prescribed wall positions at t + dt
+  bodies,              // Newton-Euler with DEM contact, sub-stepped
+  clock,               // t += dt, the step report
+  checks,              // guards: non-finite values, runaway speed, escaped particles
+  probes,              // the scene's probes
+};
+
+// Name of a stage in timings and reports.
+const char* stage_name(Stage stage);
+
+// What a scene uses, resolved once from its model and parameters.
+struct SceneFeatures {
+  bool bodies = false;         // any rigid body
+  bool dynamic_wall = false;   // walls in the divergence (docs/method.md), bodies solved with P
+  bool turbulence = false;     // a sub-particle-scale model
+  bool wall_friction = false;  // the law-of-the-wall stress
+  bool shifting = false;       // any particle shifting
+  bool moving_walls = false;   // a wall with a prescribed motion
+  bool probes = false;         // any probe
+};
+
+std::vector<Stage> compose_step(const SceneFeatures& features);
+
+}  // namespace washout

@@ -1,0 +1,66 @@
+// The step is composed from what a scene uses (engine/sim/step_plan.hpp): a stage the scene does
+// not need is not in the list, and the order of the stages is METHOD.md's.
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <string>
+
+#include "engine/sim/step_plan.hpp"
+
+namespace washout {
+namespace {
+
+bool has(const std::vector<Stage>& plan, Stage s) {
+  return std::find(plan.begin(), plan.end(), s) != plan.end();
+}
+
+std::string text(const std::vector<Stage>& plan) {
+  std::string t;
+  for (Stage s : plan) {
+    if (!t.empty()) t += ' ';
+    t += stage_name(s);
+  }
+  return t;
+}
+
+TEST(StepPlan, StillTankRunsOnlyTheFluidStages) {
+  const auto plan = compose_step({});
+  std::printf("still tank: %s\n", text(plan).c_str());
+  EXPECT_EQ(
+      text(plan),
+      "neighbours density wall_markers predictor ppe_assembly ppe_solve corrector clock checks");
+}
+
+TEST(StepPlan, BodiesBringTheirStagesAndNothingElse) {
+  SceneFeatures f;
+  f.bodies = f.dynamic_wall = true;
+  const auto plan = compose_step(f);
+  std::printf("floating body: %s\n", text(plan).c_str());
+  for (Stage s : {Stage::squeeze_film, Stage::prescribed_bodies, Stage::wall_accelerations,
+                  Stage::body_loads, Stage::bodies})
+    EXPECT_TRUE(has(plan, s)) << stage_name(s);
+  for (Stage s : {Stage::turbulence, Stage::moving_walls, Stage::wall_positions, Stage::shifting,
+                  Stage::probes, Stage::wall_shear})
+    EXPECT_FALSE(has(plan, s)) << stage_name(s);
+}
+
+TEST(StepPlan, LoadsAreTakenBeforeTheFluidMovesAndChecksAfterTheClock) {
+  SceneFeatures f;
+  f.bodies = f.moving_walls = f.shifting = f.turbulence = f.probes = f.wall_friction = true;
+  const auto plan = compose_step(f);
+  std::printf("everything: %s\n", text(plan).c_str());
+  const auto at = [&](Stage s) { return std::find(plan.begin(), plan.end(), s) - plan.begin(); };
+  EXPECT_LT(at(Stage::turbulence), at(Stage::predictor));
+  EXPECT_LT(at(Stage::predictor), at(Stage::wall_shear));
+  EXPECT_LT(at(Stage::moving_walls), at(Stage::ppe_assembly));  // u_wall at t + dt in the PPE
+  EXPECT_LT(at(Stage::ppe_solve), at(Stage::body_loads));
+  EXPECT_LT(at(Stage::body_loads), at(Stage::corrector));  // P^{n+1} belongs to x^n
+  EXPECT_LT(at(Stage::corrector), at(Stage::shifting));
+  EXPECT_LT(at(Stage::bodies), at(Stage::clock));
+  EXPECT_LT(at(Stage::clock), at(Stage::checks));
+  EXPECT_EQ(plan.back(), Stage::probes);
+  EXPECT_FALSE(has(plan, Stage::squeeze_film));  // only with the dynamic wall condition
+}
+
+}  // namespace
+}  // namespace washout
