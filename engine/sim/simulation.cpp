@@ -14,9 +14,7 @@
 #include "engine/fluid/fluid_interpolation.hpp"
 #include "engine/fluid/isph_stages.hpp"
 #include "engine/io/run_file_writer.hpp"
-#include "engine/sim/free_spot.hpp"
 #include "engine/sim/particle_builder.hpp"
-#include "engine/sim/push_out.hpp"
 #include "engine/sim/rigid_body_system.hpp"
 
 namespace washout {
@@ -266,6 +264,9 @@ void Simulation::run_stage(Stage stage, StepInProgress& now) {
     case Stage::checks:
       check_health(report);
       return;
+    case Stage::push_out:
+      push_out_of_solids(report);
+      return;
     case Stage::probes:
       evaluate_probes();
       return;
@@ -351,128 +352,12 @@ void Simulation::check_health(StepReport& report) {
         throw UnstableError(where.str());
       }
   }
-  // Fluid inside a wall: only particles that see a boundary particle can be there.
-  std::size_t inside = 0, new_crossings = 0;
-  trapped_.assign(n, 0);
-#pragma omp parallel for reduction(+ : inside, new_crossings) schedule(dynamic, 512)
-  for (std::size_t i = 0; i < n; ++i) {
-    bool sees_wall = false;
-    for (std::uint64_t k = neighbors_.offset[i]; k < neighbors_.offset[i + 1] && !sees_wall; ++k)
-      sees_wall = neighbors_.index[k] >= n;
-    bool in_wall = false;
-    if (sees_wall) {
-      // A particle found inside a wall or a body is put back d0/2 outside it (push_out.hpp).
-      Vec3 x = particles_.x(i), u = particles_.u(i);
-      const double clearance = 0.5 * ctx_.d0;
-      for (std::size_t w = 0; w < model_.walls.size() && !in_wall; ++w) {
-        const MovingWall* motion = motion_of_wall(w);
-        const Vec3 shift = motion ? motion->displacement : Vec3::Zero();
-        const Vec3 wall_velocity = motion ? motion->velocity : Vec3::Zero();
-        const Shape& shape = model_.walls[w].shape;
-        const double distance = shape.signed_distance(x - shift, dim);
-        in_wall = distance < 0.0;
-        if (in_wall)
-          push_out_of_solid(x, u, distance, shape.normal(x - shift, dim, 1e-3 * clearance),
-                            clearance, [&](const Vec3&) { return wall_velocity; });
-      }
-      // Inside a body: test each body it sees once (neighbours of one body come in a row).
-      std::int32_t tested = -1;
-      for (std::uint64_t k = neighbors_.offset[i];
-           k < neighbors_.offset[i + 1] && bodies_ && !in_wall; ++k) {
-        const std::int32_t b = particles_.body[neighbors_.index[k]];
-        if (b < 0 || b == tested) continue;
-        tested = b;
-        in_wall = bodies_->push_out(static_cast<std::size_t>(b), x, u, clearance);
-      }
-      if (in_wall) {
-        for (int a = 0; a < dim; ++a) {
-          particles_.position[a][i] = x[a];
-          particles_.velocity[a][i] = u[a];
-        }
-        // Out of one solid and into another: caught in a closing gap.
-        trapped_[i] = distance_to_solids(x) < 0.0;
-      }
-    }
-    if (in_wall) {
-      ++inside;
-      if (!inside_wall_[i]) ++new_crossings;
-    }
-    inside_wall_[i] = in_wall;
-  }
-  report.particles_in_walls = inside;
-  wall_crossings_ += static_cast<long>(new_crossings);
-  for (std::size_t i = 0; i < n; ++i)
-    if (trapped_[i]) move_out_of_gap(i);
 }
 
 const MovingWall* Simulation::motion_of_wall(std::size_t w) const {
   for (const auto& wall : moving_walls_)
     if (wall.wall_index == w) return &wall;
   return nullptr;
-}
-
-double Simulation::distance_to_solids(const Vec3& x) const {
-  const int dim = particles_.dim;
-  double distance = std::numeric_limits<double>::max();
-  for (std::size_t w = 0; w < model_.walls.size(); ++w) {
-    const MovingWall* motion = motion_of_wall(w);
-    const Vec3 shift = motion ? motion->displacement : Vec3::Zero();
-    distance = std::min(distance, model_.walls[w].shape.signed_distance(x - shift, dim));
-  }
-  for (std::size_t b = 0; bodies_ && b < bodies_->size(); ++b)
-    distance = std::min(distance, bodies_->signed_distance(b, x));
-  return distance;
-}
-
-void Simulation::move_out_of_gap(std::size_t i) {
-  const int dim = particles_.dim;
-  const double d0 = ctx_.d0;
-  auto inside_domain = [&](const Vec3& y) {
-    for (int a = 0; a < dim; ++a)
-      if (y[a] < domain_lower_[a] || y[a] > domain_upper_[a]) return false;
-    return true;
-  };
-  // A free place must also have fluid within the kernel support: the far side of a wall (as
-  // thick as the support) is clear of solids too, but out of the fluid's reach.
-  auto clear_of_solids = [&](const Vec3& y) {
-    if (!inside_domain(y) || distance_to_solids(y) < 0.5 * d0) return false;
-    const double point[3] = {y[0], y[1], y[2]};
-    int wet = 0;
-    accumulate_fluid_at(ctx_, grid_, particles_, point,
-                        [&](std::uint32_t f, double) { wet += f != i; });
-    return wet >= 3;
-  };
-  // Prefer a hole in the fluid (no particle within d0/2); next to the gap the fluid is usually
-  // packed, so settle for any place clear of the solids within the same search radius.
-  auto clear_of_fluid = [&](const Vec3& y) {
-    if (!clear_of_solids(y)) return false;
-    const double point[3] = {y[0], y[1], y[2]};
-    bool crowded = false;
-    grid_.for_each_candidate(point, [&](std::uint32_t f) {
-      if (crowded || f >= particles_.fluid_count || f == i) return;
-      crowded = (particles_.x(f) - y).squaredNorm() < 0.25 * d0 * d0;
-    });
-    return !crowded;
-  };
-  const int rings = 40;  // a search radius of 20 d0: wider than the gaps bodies close
-  std::optional<Vec3> spot = find_free_spot(particles_.x(i), dim, d0, rings, clear_of_fluid);
-  if (!spot) spot = find_free_spot(particles_.x(i), dim, d0, rings, clear_of_solids);
-  if (!spot) return;  // left where it is, still counted as inside a wall
-  // It takes the velocity of the fluid around its new place (kernel-weighted).
-  const double point[3] = {spot->x(), spot->y(), spot->z()};
-  Vec3 sum = Vec3::Zero();
-  double weight = 0.0;
-  accumulate_fluid_at(ctx_, grid_, particles_, point, [&](std::uint32_t f, double w) {
-    if (f == i || trapped_[f]) return;
-    sum += w * particles_.u(f);
-    weight += w;
-  });
-  const Vec3 u = weight > 0.0 ? Vec3(sum / weight) : Vec3::Zero();
-  for (int a = 0; a < dim; ++a) {
-    particles_.position[a][i] = (*spot)[a];
-    particles_.velocity[a][i] = u[a];
-  }
-  ++gap_relocations_;
 }
 
 void Simulation::evaluate_probes() {

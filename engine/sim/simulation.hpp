@@ -126,6 +126,7 @@ class Simulation {
  private:
   double choose_time_step(double until) const;
   void check_health(StepReport& report);
+  void push_out_of_solids(StepReport& report);  // solid_push_out.cpp
   // One step's values shared by its stages.
   struct StepInProgress {
     double dt = 0.0, t_new = 0.0;

@@ -42,6 +42,8 @@ const char* stage_name(Stage stage) {
       return "clock";
     case Stage::checks:
       return "checks";
+    case Stage::push_out:
+      return "push_out";
     case Stage::probes:
       return "probes";
   }
@@ -64,7 +66,7 @@ std::vector<Stage> compose_step(const SceneFeatures& f) {
   if (f.shifting) plan.push_back(Stage::shifting);
   if (f.moving_walls) plan.push_back(Stage::wall_positions);
   if (f.bodies) plan.push_back(Stage::bodies);
-  plan.insert(plan.end(), {Stage::clock, Stage::checks});
+  plan.insert(plan.end(), {Stage::clock, Stage::checks, Stage::push_out});
   if (f.probes) plan.push_back(Stage::probes);
   return plan;
 }

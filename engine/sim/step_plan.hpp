@@ -28,6 +28,7 @@ enum class Stage : std::uint8_t {
   bodies,              // Newton-Euler with DEM contact, sub-stepped
   clock,               // t += dt, the step report
   checks,              // guards: non-finite values, runaway speed, escaped particles
+  push_out,            // fluid found inside a wall or a body, or caught in a closing gap, put back
   probes,              // the scene's probes
 };
 

@@ -28,7 +28,8 @@ TEST(StepPlan, StillTankRunsOnlyTheFluidStages) {
   std::printf("still tank: %s\n", text(plan).c_str());
   EXPECT_EQ(
       text(plan),
-      "neighbours density wall_markers predictor ppe_assembly ppe_solve corrector clock checks");
+      "neighbours density wall_markers predictor ppe_assembly ppe_solve corrector clock checks "
+      "push_out");
 }
 
 TEST(StepPlan, BodiesBringTheirStagesAndNothingElse) {
