@@ -278,4 +278,22 @@ void RunFileWriter::write_xdmf() const {
   std::filesystem::rename(xdmf_path + ".tmp", xdmf_path, ec);
 }
 
+void write_root_attributes(const std::string& path,
+                           const std::vector<std::pair<std::string, double>>& numbers,
+                           const std::vector<std::pair<std::string, std::string>>& texts) {
+  hid_t file = H5Fopen(path.c_str(), H5F_ACC_RDWR, H5P_DEFAULT);
+  if (file < 0) throw OutputError("cannot open " + path + " to add attributes");
+  try {
+    for (const auto& [name, value] : numbers) {
+      if (H5Aexists(file, name.c_str()) > 0) H5Adelete(file, name.c_str());
+      write_attribute(file, name, H5T_NATIVE_DOUBLE, &value);
+    }
+    for (const auto& [name, value] : texts) write_string_attribute(file, name, value);
+  } catch (const OutputError& e) {
+    H5Fclose(file);
+    throw OutputError(std::string(e.what()) + " of " + path);
+  }
+  if (H5Fclose(file) < 0) throw OutputError("cannot close " + path);
+}
+
 }  // namespace washout::io

@@ -6,6 +6,7 @@
 #include <map>
 #include <stdexcept>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include "engine/core/particle_view.hpp"
@@ -63,5 +64,11 @@ class RunFileWriter {
   int dim_ = 2;
   std::vector<FrameRecord> frames_;
 };
+
+// Adds (or replaces) root attributes of a closed run file: numbers as float64, texts as
+// fixed-length UTF-8, as the writer stores its own. Used after a run for its cost and scores.
+void write_root_attributes(const std::string& path,
+                           const std::vector<std::pair<std::string, double>>& numbers,
+                           const std::vector<std::pair<std::string, std::string>>& texts);
 
 }  // namespace washout::io
