@@ -1,12 +1,13 @@
-// Step 3 of METHOD.md, the corrector u^{n+1} = u* - (dt/rho0) <grad P^{n+1}>, then step 4, the
-// position update x^{n+1} = x^n + dt u^{n+1}. The gradient is either the symmetric form
-//   <grad P>_i = rho_i sum_j m_j (P_i/rho_i^2 + P_j/rho_j^2) grad W_ij   (default; conserves momentum)
+// Step 3 of METHOD.md, the corrector u^{n+1} = u* - (dt/rho0) <grad P^{n+1}>, and step 4, the
+// position update x^{n+1} = x^n + dt u^{n+1} (two stages: the surface velocity smoothing,
+// surface_smoothing.cpp, runs between them). The gradient is either the symmetric form
+//   <grad P>_i = rho_i sum_j m_j (P_i/rho_i^2 + P_j/rho_j^2) grad W_ij   (default; conserves
+//   momentum)
 // or the difference form (1/rho_i) sum_j m_j (P_j - P_i) grad W_ij, both with equal volumes
 // V = m/rho0 and the lattice normalisation. A boundary neighbour w carries the virtual pressure
 // P_w = P_i + g_iw of the Neumann wall condition (see pressure_poisson.cpp).
-#include <algorithm>
-
 #include <Eigen/Dense>
+#include <algorithm>
 
 #include "engine/fluid/isph_stages.hpp"
 
@@ -16,8 +17,8 @@ namespace {
 // Kernel gradient correction (Bonet & Lok 1999): L_i = (sum_j V (x_j - x_i) (x) grad W_ij)^-1 makes
 // the difference-form gradient exact for linear fields even where the support is truncated (at
 // the free surface). Returns false where too few neighbours make the matrix ill-conditioned.
-bool gradient_correction_matrix(const SphContext& ctx, const NeighborList& list,
-                                const Particles& p, std::size_t i, Eigen::Matrix3d& L) {
+bool gradient_correction_matrix(const SphContext& ctx, const NeighborList& list, const Particles& p,
+                                std::size_t i, Eigen::Matrix3d& L) {
   Eigen::Matrix3d M = Eigen::Matrix3d::Zero();
   for (std::uint64_t k = list.offset[i]; k < list.offset[i + 1]; ++k) {
     double d[3];
@@ -36,10 +37,9 @@ bool gradient_correction_matrix(const SphContext& ctx, const NeighborList& list,
 
 }  // namespace
 
-double correct_and_advect(const SphContext& ctx, const NeighborList& list, Particles& p,
-                          const FluidWork& work, const Vec3& gravity, double dt,
-                          bool symmetric_gradient, double surface_smoothing,
-                          std::vector<double>& smoothed) {
+void correct_velocity(const SphContext& ctx, const NeighborList& list, Particles& p,
+                      const FluidWork& work, const Vec3& gravity, double dt,
+                      bool symmetric_gradient) {
   const std::size_t n = p.fluid_count;
   const double g_scale = ctx.gradient_correction * ctx.volume;
 #pragma omp parallel for schedule(static)
@@ -50,7 +50,8 @@ double correct_and_advect(const SphContext& ctx, const NeighborList& list, Parti
     const bool surface = work.free_surface[i] != 0;
     Eigen::Matrix3d L;
     const bool corrected = surface && gradient_correction_matrix(ctx, list, p, i, L);
-    const double sign_i = (symmetric_gradient && !corrected) ? 1.0 : -1.0;  // P_i + P_j or P_j - P_i
+    const double sign_i =
+        (symmetric_gradient && !corrected) ? 1.0 : -1.0;  // P_i + P_j or P_j - P_i
     double grad[3] = {0, 0, 0};
     const double Pi = p.pressure[i];
     for (std::uint64_t k = list.offset[i]; k < list.offset[i + 1]; ++k) {
@@ -72,32 +73,10 @@ double correct_and_advect(const SphContext& ctx, const NeighborList& list, Parti
     for (int a = 0; a < ctx.dim; ++a)
       p.velocity[a][i] = work.u_star[a][i] - dt / ctx.rho0 * grad[a];
   }
-  // Free-surface particles carry P = 0 and so no incompressibility constraint of their own:
-  // nothing would stop them drifting away from the fluid beneath. They move with the
-  // kernel-weighted mean velocity of their neighbourhood (XSPH, Monaghan 1989, surface only).
-  if (surface_smoothing > 0) {
-    smoothed.assign(3 * n, 0.0);
-#pragma omp parallel for schedule(static)
-    for (std::size_t i = 0; i < n; ++i) {
-      if (!work.free_surface[i]) continue;
-      double sum_w = ctx.kernel.value(0.0), mean[3];
-      for (int a = 0; a < 3; ++a) mean[a] = sum_w * p.velocity[a][i];
-      for (std::uint64_t k = list.offset[i]; k < list.offset[i + 1]; ++k) {
-        const std::size_t j = list.index[k];
-        if (j >= n) continue;
-        double d[3];
-        ctx.displacement(p, i, j, d);
-        const double w = ctx.kernel.value(std::sqrt(d[0] * d[0] + d[1] * d[1] + d[2] * d[2]));
-        sum_w += w;
-        for (int a = 0; a < 3; ++a) mean[a] += w * p.velocity[a][j];
-      }
-      for (int a = 0; a < 3; ++a)
-        smoothed[3 * i + a] = p.velocity[a][i] + surface_smoothing * (mean[a] / sum_w - p.velocity[a][i]);
-    }
-    for (std::size_t i = 0; i < n; ++i)
-      if (work.free_surface[i])
-        for (int a = 0; a < ctx.dim; ++a) p.velocity[a][i] = smoothed[3 * i + a];
-  }
+}
+
+double advance_positions(const SphContext& ctx, Particles& p, double dt) {
+  const std::size_t n = p.fluid_count;
   double max_speed2 = 0.0;
 #pragma omp parallel for schedule(static) reduction(max : max_speed2)
   for (std::size_t i = 0; i < n; ++i) {

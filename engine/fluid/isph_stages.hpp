@@ -89,12 +89,17 @@ inline double wall_pressure_jump(const SphContext& ctx, const Particles& p, cons
   return ctx.rho0 * (un / dt * rn + (gr - gn * rn));
 }
 
-// Step 3, corrector: u^{n+1} = u* - (dt/rho0) <grad P>; step 4: x^{n+1} = x^n + dt u^{n+1}
-// (corrector.cpp). Returns the largest fluid speed after the update.
-double correct_and_advect(const SphContext& ctx, const NeighborList& list, Particles& p,
-                          const FluidWork& work, const Vec3& gravity, double dt,
-                          bool symmetric_gradient, double surface_smoothing,
-                          std::vector<double>& smoothed);
+// Step 3, corrector: u^{n+1} = u* - (dt/rho0) <grad P> (corrector.cpp).
+void correct_velocity(const SphContext& ctx, const NeighborList& list, Particles& p,
+                      const FluidWork& work, const Vec3& gravity, double dt,
+                      bool symmetric_gradient);
+// Free-surface particles take this fraction of their neighbourhood's mean velocity (XSPH on the
+// surface only; surface_smoothing.cpp).
+void smooth_surface_velocity(const SphContext& ctx, const NeighborList& list, Particles& p,
+                             const FluidWork& work, double surface_smoothing,
+                             std::vector<double>& smoothed);
+// Step 4: x^{n+1} = x^n + dt u^{n+1} (corrector.cpp). Returns the largest fluid speed.
+double advance_positions(const SphContext& ctx, Particles& p, double dt);
 
 // Fickian particle shifting after the position update (particle_shifting.cpp):
 //   delta r = -(A h^2 + A_u h |u| dt) grad C.

@@ -128,6 +128,7 @@ Simulation::Simulation(Model model)
   features.turbulence = prm.turbulence == "smagorinsky";
   features.wall_friction = prm.wall_friction == "log_law";
   features.shifting = prm.shifting > 0 || prm.shifting_with_speed > 0;
+  features.surface_smoothing = prm.surface_smoothing > 0;
   features.moving_walls = !moving_walls_.empty();
   features.probes = !model_.probes.empty();
   plan_ = compose_step(features);
@@ -240,8 +241,14 @@ void Simulation::run_stage(Stage stage, StepInProgress& now) {
       }
       return;
     case Stage::corrector:
-      max_speed_ = correct_and_advect(ctx_, neighbors_, particles_, work_, prm.gravity, dt,
-                                      symmetric_gradient_, prm.surface_smoothing, shift_scratch_);
+      correct_velocity(ctx_, neighbors_, particles_, work_, prm.gravity, dt, symmetric_gradient_);
+      return;
+    case Stage::surface_smoothing:
+      smooth_surface_velocity(ctx_, neighbors_, particles_, work_, prm.surface_smoothing,
+                              shift_scratch_);
+      return;
+    case Stage::advect:
+      max_speed_ = advance_positions(ctx_, particles_, dt);
       return;
     case Stage::shifting:
       shift_particles(ctx_, neighbors_, particles_, work_, prm.shifting, prm.shifting_with_speed,

@@ -32,6 +32,10 @@ const char* stage_name(Stage stage) {
       return "body_loads";
     case Stage::corrector:
       return "corrector";
+    case Stage::surface_smoothing:
+      return "surface_smoothing";
+    case Stage::advect:
+      return "advect";
     case Stage::shifting:
       return "shifting";
     case Stage::wall_positions:
@@ -63,6 +67,8 @@ std::vector<Stage> compose_step(const SceneFeatures& f) {
   if (f.bodies)
     plan.push_back(Stage::body_loads);  // P^{n+1} belongs to x^n: before the fluid moves
   plan.push_back(Stage::corrector);
+  if (f.surface_smoothing) plan.push_back(Stage::surface_smoothing);
+  plan.push_back(Stage::advect);
   if (f.shifting) plan.push_back(Stage::shifting);
   if (f.moving_walls) plan.push_back(Stage::wall_positions);
   if (f.bodies) plan.push_back(Stage::bodies);

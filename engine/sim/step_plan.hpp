@@ -22,7 +22,9 @@ enum class Stage : std::uint8_t {
   ppe_assembly,        // step 2: the stabilized PPE
   ppe_solve,           //         and its solution
   body_loads,          // pressure loads on the bodies (solved with them when dynamic)
-  corrector,           // steps 3 and 4: u = u* - dt/rho0 grad P, x += dt u
+  corrector,           // step 3: u = u* - dt/rho0 grad P
+  surface_smoothing,   // free-surface particles take part of their neighbours' mean velocity
+  advect,              // step 4: x += dt u
   shifting,            // Fickian particle shifting
   wall_positions,      // prescribed wall positions at t + dt
   bodies,              // Newton-Euler with DEM contact, sub-stepped
@@ -37,13 +39,14 @@ const char* stage_name(Stage stage);
 
 // What a scene uses, resolved once from its model and parameters.
 struct SceneFeatures {
-  bool bodies = false;         // any rigid body
-  bool dynamic_wall = false;   // walls in the divergence (docs/method.md), bodies solved with P
-  bool turbulence = false;     // a sub-particle-scale model
-  bool wall_friction = false;  // the law-of-the-wall stress
-  bool shifting = false;       // any particle shifting
-  bool moving_walls = false;   // a wall with a prescribed motion
-  bool probes = false;         // any probe
+  bool bodies = false;             // any rigid body
+  bool dynamic_wall = false;       // walls in the divergence (docs/method.md), bodies solved with P
+  bool turbulence = false;         // a sub-particle-scale model
+  bool wall_friction = false;      // the law-of-the-wall stress
+  bool shifting = false;           // any particle shifting
+  bool surface_smoothing = false;  // XSPH on the free surface
+  bool moving_walls = false;       // a wall with a prescribed motion
+  bool probes = false;             // any probe
 };
 
 std::vector<Stage> compose_step(const SceneFeatures& features);
