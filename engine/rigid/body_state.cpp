@@ -14,13 +14,13 @@ Eigen::Matrix3d world_inertia(const BodyModel& model, const Eigen::Quaterniond& 
     inertia(2, 2) = model.inertia(2, 2);
     return inertia;
   }
-  const Eigen::Matrix3d rotation = q.toRotationMatrix();
+  const Eigen::Matrix3d rotation = rotation_matrix(q);
   return rotation * model.inertia * rotation.transpose();
 }
 
 Eigen::Matrix3d world_inertia_inverse(const BodyModel& model, const Eigen::Quaterniond& q) {
   if (model.dim == 2) return model.inertia_inverse;  // already diag(0, 0, 1/I_zz)
-  const Eigen::Matrix3d rotation = q.toRotationMatrix();
+  const Eigen::Matrix3d rotation = rotation_matrix(q);
   return rotation * model.inertia_inverse * rotation.transpose();
 }
 
@@ -40,7 +40,7 @@ double kinetic_energy(const BodyModel& model, const BodyState& state) {
 void particle_positions(const BodyState& state, const Vec3Array& offset, Vec3Array& position) {
   const std::size_t n = offset.size();
   position.resize(n);
-  const Eigen::Matrix3d r = state.orientation.toRotationMatrix();
+  const Eigen::Matrix3d r = rotation_matrix(state.orientation);
   const Vec3 c = state.position;
   for (std::size_t i = 0; i < n; ++i) {
     const double ox = offset.x[i], oy = offset.y[i], oz = offset.z[i];
@@ -53,7 +53,7 @@ void particle_positions(const BodyState& state, const Vec3Array& offset, Vec3Arr
 void particle_velocities(const BodyState& state, const Vec3Array& offset, Vec3Array& velocity) {
   const std::size_t n = offset.size();
   velocity.resize(n);
-  const Eigen::Matrix3d r = state.orientation.toRotationMatrix();
+  const Eigen::Matrix3d r = rotation_matrix(state.orientation);
   const Vec3 t = state.velocity;
   const Vec3 w = state.angular_velocity;
   for (std::size_t i = 0; i < n; ++i) {

@@ -17,6 +17,10 @@ struct BodyState {
   Vec3 angular_velocity = Vec3::Zero();  // w: world frame [rad/s]; 2D: (0, 0, w_z)
 };
 
+// R(q), the rotation matrix of a unit quaternion (METHOD.md Rigid bodies, "rotation matrix
+// R(q)"): body frame to world frame.
+inline Eigen::Matrix3d rotation_matrix(const Eigen::Quaterniond& q) { return q.toRotationMatrix(); }
+
 // The body where its particles were given: X = centre of mass, q = identity, at rest.
 BodyState initial_state(const BodyModel& model);
 

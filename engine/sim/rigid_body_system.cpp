@@ -102,7 +102,7 @@ RigidBodySystem::RigidBodySystem(const Model& model, std::vector<BuiltBody> bodi
 void RigidBodySystem::place_body(std::size_t b, Particles& p) const {
   const rigid::BodyModel& model = models_[b];
   const rigid::BodyState& s = states_[b];
-  const Eigen::Matrix3d R = s.orientation.toRotationMatrix();
+  const Eigen::Matrix3d R = rigid::rotation_matrix(s.orientation);
   const rigid::Vec3Array& r0 = model.offset;
   const rigid::Vec3Array& n0 = reference_normal_[b];
   const std::size_t first = first_[b];
@@ -156,7 +156,7 @@ const std::vector<rigid::BodyLoad>& RigidBodySystem::loads_of_pressure(const Sph
   scratch_loads_.resize(size());
   for (std::size_t b = 0; b < size(); ++b) {
     const std::size_t begin = surface_begin_[b], end = surface_begin_[b + 1];
-    const Eigen::Matrix3d R = states_[b].orientation.toRotationMatrix();
+    const Eigen::Matrix3d R = rigid::rotation_matrix(states_[b].orientation);
     const rigid::Vec3Array& surface_normal = models_[b].surface_normal;
     load_point_.resize(end - begin);
     load_normal_.resize(end - begin);
