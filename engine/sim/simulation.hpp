@@ -15,6 +15,7 @@
 #include "engine/fluid/sph_context.hpp"
 #include "engine/model/model.hpp"
 #include "engine/sim/implicit_body_coupling.hpp"
+#include "engine/sim/simulation_errors.hpp"
 #include "engine/sim/stage_timer.hpp"
 #include "engine/sim/step_plan.hpp"
 #include "engine/solvers/linear_solver.hpp"
@@ -25,25 +26,6 @@ namespace io {
 class RunFileWriter;
 }
 class RigidBodySystem;
-
-// The scene cannot be run as given (caught before the first step). `where` names the scene
-// location and `parameter` the offending parameter when known.
-class SceneError : public std::runtime_error {
- public:
-  SceneError(const std::string& message, std::string where = "", std::string parameter = "")
-      : std::runtime_error(message), where_(std::move(where)), parameter_(std::move(parameter)) {}
-  const std::string& where() const { return where_; }
-  const std::string& parameter() const { return parameter_; }
-
- private:
-  std::string where_, parameter_;
-};
-
-// The simulation blew up: NaN, runaway speed, particles leaving the domain, solver failure.
-class UnstableError : public std::runtime_error {
- public:
-  using std::runtime_error::runtime_error;
-};
 
 struct StepReport {
   long step = 0;
