@@ -20,7 +20,8 @@ struct MovingWall {
 // Evaluates the motion at time t; returns false if it is not finite.
 bool evaluate_wall_motion(MovingWall& wall, double t);
 // Sets the particles' velocity (before the pressure solve: the Neumann condition needs the wall
-// velocity at the new time) or their position (after the fluid has moved) from the evaluated motion.
+// velocity at the new time) or their position (after the fluid has moved) from the evaluated
+// motion.
 void set_wall_velocity(const MovingWall& wall, Particles& p);
 void set_wall_position(const MovingWall& wall, Particles& p);
 

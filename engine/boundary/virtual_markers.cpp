@@ -29,9 +29,10 @@ void update_marker_velocities(const SphContext& ctx, const NeighborGrid& grid, c
       m[a] = p.position[a][w] + 2.0 * p.wall_distance[w] * normal[a];
     }
     double u_m[3] = {0, 0, 0};
-    const double fraction = interpolate_fluid_linear(ctx, grid, p, m, [&](std::uint32_t f, double wt) {
-      for (int a = 0; a < ctx.dim; ++a) u_m[a] += wt * p.velocity[a][f];
-    });
+    const double fraction =
+        interpolate_fluid_linear(ctx, grid, p, m, [&](std::uint32_t f, double wt) {
+          for (int a = 0; a < ctx.dim; ++a) u_m[a] += wt * p.velocity[a][f];
+        });
     if (fraction < kDryFluidFraction) {
       for (int a = 0; a < 3; ++a) work.marker_velocity[a][w] = u_wall[a];
       continue;

@@ -12,7 +12,8 @@ void update_wall_accelerations(const Particles& p, const std::vector<std::uint8_
   }
   for (std::size_t w = first; w < n; ++w) {
     const std::int32_t b = p.body[w];
-    const bool solved = b >= 0 && static_cast<std::size_t>(b) < solved_body.size() && solved_body[b];
+    const bool solved =
+        b >= 0 && static_cast<std::size_t>(b) < solved_body.size() && solved_body[b];
     double acc[3], an = 0.0;
     for (int a = 0; a < 3; ++a) {
       acc[a] = solved ? 0.0 : (p.velocity[a][w] - previous[a][w]) / dt;

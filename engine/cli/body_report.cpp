@@ -99,7 +99,8 @@ std::vector<BodyTrack> read_body_tracks(const std::string& h5_path) {
     t.name = name;
     t.dim = run.dim();
     const std::string group = "/bodies/" + name;
-    t.mass = run.has_attribute(group, "mass") ? std::stod(run.string_attribute("mass", group)) : 0.0;
+    t.mass =
+        run.has_attribute(group, "mass") ? std::stod(run.string_attribute("mass", group)) : 0.0;
     if (run.has(group + "/time")) {  // not when the run stopped before its first step
       t.time = run.read_doubles(group + "/time");
       t.position = run.read_doubles(group + "/position");

@@ -13,7 +13,8 @@
 namespace {
 
 const char* kUsage =
-    "washout " WASHOUT_VERSION " - stabilized ISPH for bridge-girder wash-out\n"
+    "washout " WASHOUT_VERSION
+    " - stabilized ISPH for bridge-girder wash-out\n"
     "\n"
     "usage: washout run SCENE.lua [--out DIR] [--set NAME=VALUE ...] [--threads N] [--quiet]\n"
     "       washout render RUN.h5 [--out DIR] [--every K] [--width W --height H] [--color FIELD]\n"

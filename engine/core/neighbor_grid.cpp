@@ -20,7 +20,8 @@ std::size_t NeighborGrid::cell_index(const long c[3]) const {
              (static_cast<std::size_t>(c[1]) + static_cast<std::size_t>(cells_[1]) * c[2]);
 }
 
-void NeighborGrid::build(const Particles& particles, double cell_size, const PeriodicBox& periodic) {
+void NeighborGrid::build(const Particles& particles, double cell_size,
+                         const PeriodicBox& periodic) {
   dim_ = particles.dim;
   periodic_ = periodic;
   const std::size_t n = particles.size();

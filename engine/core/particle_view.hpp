@@ -25,9 +25,9 @@ struct ParticleView {
   double d0 = 0.0;  // particle spacing [m]: sets the drawn particle radius
   VectorView position;
   VectorView velocity;
-  const double* pressure = nullptr;         // [count] Pa, may be null
-  const std::uint8_t* kind = nullptr;       // [count] ParticleKind values
-  const std::int32_t* body = nullptr;       // [count] body index for kind 3, else -1; may be null
+  const double* pressure = nullptr;    // [count] Pa, may be null
+  const std::uint8_t* kind = nullptr;  // [count] ParticleKind values
+  const std::int32_t* body = nullptr;  // [count] body index for kind 3, else -1; may be null
 };
 
 }  // namespace washout

@@ -17,7 +17,7 @@ struct Particles {
   std::array<std::vector<double>, 3> position;
   std::array<std::vector<double>, 3> velocity;
   std::vector<double> pressure;
-  std::vector<double> density;  // summation density <rho>_i (fluid only)
+  std::vector<double> density;     // summation density <rho>_i (fluid only)
   std::vector<std::uint8_t> kind;  // ParticleKind
   std::vector<std::uint64_t> id;
   std::vector<std::int32_t> body;   // body index for rigid-body particles, else -1

@@ -41,8 +41,8 @@ constexpr double kWetFluidFraction = 0.5;
 // Calls visit(f, w_f) (the weights sum to 1); falls back to Shepard weights where the fluid is
 // too sparse to fit a gradient. Returns the fluid fraction at m as accumulate_fluid_at does.
 template <class Visit>
-double interpolate_fluid_linear(const SphContext& ctx, const NeighborGrid& grid,
-                                const Particles& p, const double m[3], Visit&& visit) {
+double interpolate_fluid_linear(const SphContext& ctx, const NeighborGrid& grid, const Particles& p,
+                                const double m[3], Visit&& visit) {
   Eigen::Matrix4d A = Eigen::Matrix4d::Zero();
   const double scale = 1.0 / ctx.h;  // keeps A well scaled whatever the units
   const double fraction = accumulate_fluid_at(ctx, grid, p, m, [&](std::uint32_t f, double w) {

@@ -9,8 +9,8 @@
 
 namespace washout {
 
-std::size_t detect_free_surface(const SphContext& ctx, const NeighborList& list,
-                                const Particles& p, double threshold, FluidWork& work) {
+std::size_t detect_free_surface(const SphContext& ctx, const NeighborList& list, const Particles& p,
+                                double threshold, FluidWork& work) {
   const std::size_t n = p.fluid_count;
   work.free_surface.assign(n, 0);
   std::size_t count = 0;

@@ -25,8 +25,10 @@ void predict_velocity(const SphContext& ctx, const NeighborList& list, const Par
       const double r = std::sqrt(r2);
       double weight = ctx.laplacian_weight(r, r2);
       const bool fluid = j < n;
-      if (turbulent) weight *= viscosity + 0.5 * (nu_t_i + (fluid ? work.eddy_viscosity[j] : nu_t_i));
-      else weight *= viscosity;
+      if (turbulent)
+        weight *= viscosity + 0.5 * (nu_t_i + (fluid ? work.eddy_viscosity[j] : nu_t_i));
+      else
+        weight *= viscosity;
       for (int a = 0; a < ctx.dim; ++a) {
         const double uj = fluid ? p.velocity[a][j] : work.marker_velocity[a][j];
         lap[a] += weight * (p.velocity[a][i] - uj);

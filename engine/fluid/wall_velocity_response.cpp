@@ -1,8 +1,7 @@
 #include "engine/fluid/wall_velocity_response.hpp"
 
-#include <cmath>
-
 #include <Eigen/Geometry>
+#include <cmath>
 
 namespace washout {
 

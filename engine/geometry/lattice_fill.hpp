@@ -11,8 +11,7 @@ namespace washout {
 
 // Lattice points inside `shape` whose depth below its surface is at most max_depth
 // (walls keep only the layers the kernel can see; pass infinity to fill the whole solid).
-std::vector<Vec3> lattice_points_inside(
-    const Shape& shape, int dim, double d0,
-    double max_depth = std::numeric_limits<double>::infinity());
+std::vector<Vec3> lattice_points_inside(const Shape& shape, int dim, double d0,
+                                        double max_depth = std::numeric_limits<double>::infinity());
 
 }  // namespace washout

@@ -114,8 +114,10 @@ const std::vector<ParameterInfo>& ParameterSet::engine_table() {
       {"max_speed", "m/s", "a faster particle stops the run as unstable; 0 = 10 sqrt(2 g L)", 0.0},
       {"periodic", "-", "periodic axes, e.g. \"x\" (needs domain_min and domain_max)",
        std::string("")},
-      {"domain_min", "m", "lower corner of the domain; particles leaving it stop the run; "
-                          "empty = bounding box of the scene plus a margin", Vec{}},
+      {"domain_min", "m",
+       "lower corner of the domain; particles leaving it stop the run; "
+       "empty = bounding box of the scene plus a margin",
+       Vec{}},
       {"domain_max", "m", "upper corner of the domain", Vec{}},
       {"threads", "-", "OpenMP threads; 0 = all cores (the CLI's --threads wins)", 0.0},
       {"max_particles", "-",
@@ -236,7 +238,10 @@ std::string ParameterSet::to_json() const {
     o << (first ? "" : ", ") << "\"" << json_escape(name) << "\": ";
     first = false;
     if (auto d = std::get_if<double>(&value)) {
-      if (std::isfinite(*d)) o << *d; else o << "null";
+      if (std::isfinite(*d))
+        o << *d;
+      else
+        o << "null";
     } else if (auto s = std::get_if<std::string>(&value)) {
       o << "\"" << json_escape(*s) << "\"";
     } else {
@@ -255,8 +260,8 @@ SimulationParameters SimulationParameters::from(const ParameterSet& set) {
   auto positive = [&](const char* name) {
     const double v = set.number(name);
     if (!(v > 0) || !std::isfinite(v))
-      throw ParameterError(name, std::string("parameter '") + name + "' must be positive, got " +
-                                     std::to_string(v));
+      throw ParameterError(
+          name, std::string("parameter '") + name + "' must be positive, got " + std::to_string(v));
     return v;
   };
   auto non_negative = [&](const char* name) {
@@ -269,8 +274,8 @@ SimulationParameters SimulationParameters::from(const ParameterSet& set) {
   auto in_unit_interval = [&](const char* name) {
     const double v = set.number(name);
     if (!(v >= 0 && v <= 1))
-      throw ParameterError(name, std::string("parameter '") + name +
-                                     "' must lie in [0, 1], got " + std::to_string(v));
+      throw ParameterError(name, std::string("parameter '") + name + "' must lie in [0, 1], got " +
+                                     std::to_string(v));
     return v;
   };
   auto integer = [&](const char* name, double v) {

@@ -33,10 +33,9 @@ void unpack(const Eigen::VectorXd& in, int dim, int first, Vec3& linear, Vec3& a
 }  // namespace
 
 CouplingReport ImplicitBodyCoupling::couple(const SphContext& ctx, const NeighborList& list,
-                                            const NeighborGrid& grid, Particles& p,
-                                            FluidWork& work, LinearSolver& solver,
-                                            RigidBodySystem& bodies, const Vec3& gravity,
-                                            double dt) {
+                                            const NeighborGrid& grid, Particles& p, FluidWork& work,
+                                            LinearSolver& solver, RigidBodySystem& bodies,
+                                            const Vec3& gravity, double dt) {
   CouplingReport report;
   const int dim = ctx.dim, per_body = dim == 2 ? 3 : 6;
   std::vector<int> first_column(bodies.size(), -1);

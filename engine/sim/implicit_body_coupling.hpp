@@ -25,8 +25,8 @@ namespace washout {
 class RigidBodySystem;
 
 struct CouplingReport {
-  int solves = 0;             // extra pressure solves (one per body degree of freedom)
-  long iterations = 0;        // their iterations in all
+  int solves = 0;       // extra pressure solves (one per body degree of freedom)
+  long iterations = 0;  // their iterations in all
 };
 
 class ImplicitBodyCoupling {

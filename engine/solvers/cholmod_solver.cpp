@@ -12,7 +12,10 @@ namespace {
 
 class CholmodSolver final : public LinearSolver {
  public:
-  CholmodSolver() { cholmod_l_start(&common_); common_.print = 0; }
+  CholmodSolver() {
+    cholmod_l_start(&common_);
+    common_.print = 0;
+  }
   ~CholmodSolver() override {
     release();
     cholmod_l_finish(&common_);
@@ -29,8 +32,8 @@ class CholmodSolver final : public LinearSolver {
     if (n == 0) return {};
     // Symmetric: the CSR rows are the CSC columns; stype = 1 reads the upper triangle
     // (entries with row <= column), which in our storage are the columns >= row of each row.
-    cholmod_sparse* M = cholmod_l_allocate_sparse(n, n, A.nonzeros(), 0, 1, 1, CHOLMOD_REAL,
-                                                  &common_);
+    cholmod_sparse* M =
+        cholmod_l_allocate_sparse(n, n, A.nonzeros(), 0, 1, 1, CHOLMOD_REAL, &common_);
     auto* p = static_cast<SuiteSparse_long*>(M->p);
     auto* idx = static_cast<SuiteSparse_long*>(M->i);
     auto* val = static_cast<double*>(M->x);

@@ -11,7 +11,7 @@
 namespace washout {
 
 struct SolveReport {
-  int iterations = 0;         // 1 for a direct solve
+  int iterations = 0;              // 1 for a direct solve
   double relative_residual = 0.0;  // |b - A x| / |b|
   bool converged = true;
 };

@@ -19,8 +19,8 @@ struct Settled {
 };
 
 // Standard deviation of the draft over the rows with t in [from, to].
-double spread_over(const std::vector<double>& time, const std::vector<double>& drafts,
-                   double from, double to) {
+double spread_over(const std::vector<double>& time, const std::vector<double>& drafts, double from,
+                   double to) {
   double sum = 0, sum2 = 0;
   int n = 0;
   for (std::size_t r = 0; r < time.size(); ++r)

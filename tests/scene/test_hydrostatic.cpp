@@ -26,7 +26,8 @@ HydrostaticError measure(const io::FrameData& f, double H, double d0) {
     e.max_speed = std::max(e.max_speed, std::sqrt(s2));
     // Interior: more than a kernel support (3 d0) below the free surface.
     if (y > H - 3.0 * d0) continue;
-    e.max_interior = std::max(e.max_interior, std::abs(f.pressure[i] - 1000.0 * 9.81 * (H - y)) / rho_g_H);
+    e.max_interior =
+        std::max(e.max_interior, std::abs(f.pressure[i] - 1000.0 * 9.81 * (H - y)) / rho_g_H);
   }
   return e;
 }
@@ -43,8 +44,10 @@ TEST(Hydrostatic, Pressure2dAfterOneSecondWithinTwoPercent) {
   const auto frame = run.read_frame(run.frame_count() - 1);
   EXPECT_NEAR(frame.time, 1.0, 1e-9);
   const auto e = measure(frame, H, d0);
-  std::printf("hydrostatic 2D, d0 = H/40, t = 1 s: max interior error %.4f rho g H, max speed %.2e m/s, "
-              "wall crossings %ld\n", e.max_interior, e.max_speed, out.summary.wall_crossings);
+  std::printf(
+      "hydrostatic 2D, d0 = H/40, t = 1 s: max interior error %.4f rho g H, max speed %.2e m/s, "
+      "wall crossings %ld\n",
+      e.max_interior, e.max_speed, out.summary.wall_crossings);
   EXPECT_LT(e.max_interior, 0.02);
   EXPECT_LT(e.max_speed, 0.01 * std::sqrt(9.81 * H));  // at rest to 1 % of the wave speed
   EXPECT_EQ(out.summary.wall_crossings, 0);
@@ -57,8 +60,9 @@ TEST(Hydrostatic, Pressure2dCoarse) {
   ASSERT_EQ(out.exit_code, 0);
   io::RunFileReader run(out.h5_path);
   const auto e = measure(run.read_frame(run.frame_count() - 1), H, d0);
-  std::printf("hydrostatic 2D, d0 = H/20, t = 1 s: max interior error %.4f rho g H, max speed %.2e m/s\n",
-              e.max_interior, e.max_speed);
+  std::printf(
+      "hydrostatic 2D, d0 = H/20, t = 1 s: max interior error %.4f rho g H, max speed %.2e m/s\n",
+      e.max_interior, e.max_speed);
   EXPECT_LT(e.max_interior, 0.035);
   EXPECT_EQ(out.summary.wall_crossings, 0);
   // The stats series: one row per step, cumulative wall time non-decreasing.
@@ -76,8 +80,9 @@ TEST(Hydrostatic, Pressure3dShortTime) {
   ASSERT_EQ(out.exit_code, 0);
   io::RunFileReader run(out.h5_path);
   const auto e = measure(run.read_frame(run.frame_count() - 1), H, d0);
-  std::printf("hydrostatic 3D, d0 = H/10, t = 0.1 s: max interior error %.4f rho g H, max speed %.2e m/s\n",
-              e.max_interior, e.max_speed);
+  std::printf(
+      "hydrostatic 3D, d0 = H/10, t = 0.1 s: max interior error %.4f rho g H, max speed %.2e m/s\n",
+      e.max_interior, e.max_speed);
   EXPECT_LT(e.max_interior, 0.06);
   EXPECT_EQ(out.summary.wall_crossings, 0);
 }

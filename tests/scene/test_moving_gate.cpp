@@ -26,12 +26,14 @@ TEST(MovingGate, HoldsThenReleasesTheColumn) {
     if (t[k] <= 0.01) early = std::max(early, x[k]);
     late = std::max(late, x[k]);
   }
-  std::printf("front before the gate clears: %.4f m (gate face at 0.1 m); at t = 0.25 s: %.4f m; "
-              "wall crossings %ld\n", early, late, out.summary.wall_crossings);
+  std::printf(
+      "front before the gate clears: %.4f m (gate face at 0.1 m); at t = 0.25 s: %.4f m; "
+      "wall crossings %ld\n",
+      early, late, out.summary.wall_crossings);
   // front = furthest particle + d0/2; particles settle against the gate by a small fraction of
   // d0 (0.2 mm measured): a tenth of d0 is allowed, a particle past the gate is not.
   EXPECT_LE(early, 0.1 + 0.1 * 0.01);
-  EXPECT_GT(late, 0.25);         // released: the surge has run well past the gate
+  EXPECT_GT(late, 0.25);  // released: the surge has run well past the gate
   // Known limitation (docs/method.md): while the gap under the rising gate is narrower than a
   // particle, the first particles squeeze through past the gate's corner and are counted as
   // crossings (1 measured). More than a few would mean the walls leak.

@@ -43,8 +43,9 @@ void check(const std::string& name, double d0, double bound_early, double bound_
   ASSERT_EQ(out.exit_code, 0);
   io::RunFileReader run(out.h5_path);
   const double early = profile_error(run, 0.2), late = profile_error(run, 1.0);
-  std::printf("Poiseuille, L/d0 = %.0f: relative L2 error %.4f at t = 0.2 s, %.4f at t = 1 s (%ld steps)\n",
-              0.1 / d0, early, late, out.summary.steps);
+  std::printf(
+      "Poiseuille, L/d0 = %.0f: relative L2 error %.4f at t = 0.2 s, %.4f at t = 1 s (%ld steps)\n",
+      0.1 / d0, early, late, out.summary.steps);
   EXPECT_LT(early, bound_early);
   EXPECT_LT(late, bound_late);
 }

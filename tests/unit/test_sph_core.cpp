@@ -81,7 +81,8 @@ TEST(NeighborGrid, MatchesBruteForce) {
           mismatches += near != (found.count(static_cast<std::uint32_t>(j)) == 1);
         }
       }
-      std::printf("dim %d periodic %d: %zu pairs, %zu mismatches\n", dim, periodic, pairs, mismatches);
+      std::printf("dim %d periodic %d: %zu pairs, %zu mismatches\n", dim, periodic, pairs,
+                  mismatches);
       EXPECT_EQ(mismatches, 0u);
       EXPECT_GT(pairs, 1000u);
     }
@@ -96,8 +97,7 @@ struct LatticeFixture {
   Particles p;
   SphContext ctx;
   NeighborList list;
-  LatticeFixture(int dim_, double jitter)
-      : dim(dim_), ctx(dim_, 0.01, 1.2, 1000.0, PeriodicBox{}) {
+  LatticeFixture(int dim_, double jitter) : dim(dim_), ctx(dim_, 0.01, 1.2, 1000.0, PeriodicBox{}) {
     p.dim = dim;
     std::mt19937 rng(3);
     std::uniform_real_distribution<double> u(-jitter * d0, jitter * d0);
@@ -106,7 +106,8 @@ struct LatticeFixture {
       for (int j = 0; j < n; ++j)
         for (int i = 0; i < n; ++i)
           p.add(ParticleKind::Fluid,
-                Vec3((i + 0.5) * d0 + u(rng), (j + 0.5) * d0 + u(rng), dim == 3 ? (k + 0.5) * d0 + u(rng) : 0),
+                Vec3((i + 0.5) * d0 + u(rng), (j + 0.5) * d0 + u(rng),
+                     dim == 3 ? (k + 0.5) * d0 + u(rng) : 0),
                 Vec3::Zero(), -1);
     NeighborGrid grid;
     grid.build(p, 2 * ctx.h, ctx.periodic);
@@ -141,12 +142,14 @@ void check_operators(int dim, double jitter, double tol_grad, double tol_lap) {
       lap += f.ctx.laplacian_correction * f.ctx.volume * 2 * f.ctx.kernel.derivative(r) * r /
              (r * r + f.ctx.eta2) * (xi.squaredNorm() - xj.squaredNorm());
     }
-    for (int c = 0; c < dim; ++c) grad_err = std::max(grad_err, std::abs(grad[c] - a[c]) / a.norm());
+    for (int c = 0; c < dim; ++c)
+      grad_err = std::max(grad_err, std::abs(grad[c] - a[c]) / a.norm());
     lap_err = std::max(lap_err, std::abs(lap - 2 * dim) / (2 * dim));
     rho_err = std::max(rho_err, std::abs(rho / f.ctx.full_support_density - 1));
   }
-  std::printf("dim %d jitter %.2f d0: gradient error %.2e, laplacian error %.2e, density error %.2e\n",
-              dim, jitter, grad_err, lap_err, rho_err);
+  std::printf(
+      "dim %d jitter %.2f d0: gradient error %.2e, laplacian error %.2e, density error %.2e\n", dim,
+      jitter, grad_err, lap_err, rho_err);
   EXPECT_LT(grad_err, tol_grad);
   EXPECT_LT(lap_err, tol_lap);
   if (jitter == 0) {
