@@ -3,7 +3,7 @@
 #include <algorithm>
 #include <cmath>
 
-#include "engine/fluid/fluid_interpolation.hpp"
+#include "engine/core/fluid_interpolation.hpp"
 
 namespace washout {
 

@@ -4,8 +4,8 @@
 #include <cstddef>
 
 #include "engine/core/neighbor_grid.hpp"
+#include "engine/core/sph_context.hpp"
 #include "engine/fluid/fluid_work.hpp"
-#include "engine/fluid/sph_context.hpp"
 
 namespace washout {
 

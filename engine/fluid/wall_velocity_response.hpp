@@ -14,8 +14,8 @@
 #include <vector>
 
 #include "engine/core/neighbor_grid.hpp"
+#include "engine/core/sph_context.hpp"
 #include "engine/fluid/fluid_work.hpp"
-#include "engine/fluid/sph_context.hpp"
 
 namespace washout {
 

@@ -2,7 +2,7 @@
 
 #include <algorithm>
 
-#include "engine/fluid/fluid_interpolation.hpp"
+#include "engine/core/fluid_interpolation.hpp"
 
 namespace washout {
 

@@ -16,7 +16,7 @@
 #include <vector>
 
 #include "engine/core/neighbor_grid.hpp"
-#include "engine/fluid/sph_context.hpp"
+#include "engine/core/sph_context.hpp"
 
 namespace washout {
 

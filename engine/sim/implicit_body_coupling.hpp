@@ -16,8 +16,8 @@
 #include <vector>
 
 #include "engine/core/neighbor_grid.hpp"
+#include "engine/core/sph_context.hpp"
 #include "engine/fluid/fluid_work.hpp"
-#include "engine/fluid/sph_context.hpp"
 #include "engine/solvers/linear_solver.hpp"
 
 namespace washout {

@@ -16,7 +16,7 @@
 
 #include "engine/contact/contact_substepper.hpp"
 #include "engine/core/neighbor_grid.hpp"
-#include "engine/fluid/sph_context.hpp"
+#include "engine/core/sph_context.hpp"
 #include "engine/model/model.hpp"
 #include "engine/rigid/rotation_angle.hpp"
 #include "engine/sim/body_builder.hpp"

@@ -11,7 +11,7 @@
 #include "engine/boundary/squeeze_film.hpp"
 #include "engine/boundary/virtual_markers.hpp"
 #include "engine/boundary/wall_acceleration.hpp"
-#include "engine/fluid/fluid_interpolation.hpp"
+#include "engine/core/fluid_interpolation.hpp"
 #include "engine/fluid/isph_stages.hpp"
 #include "engine/io/run_file_writer.hpp"
 #include "engine/sim/particle_builder.hpp"

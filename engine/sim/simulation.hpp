@@ -10,9 +10,9 @@
 
 #include "engine/boundary/moving_walls.hpp"
 #include "engine/core/neighbor_grid.hpp"
+#include "engine/core/sph_context.hpp"
 #include "engine/fluid/fluid_work.hpp"
 #include "engine/fluid/isph_stages.hpp"
-#include "engine/fluid/sph_context.hpp"
 #include "engine/model/model.hpp"
 #include "engine/sim/implicit_body_coupling.hpp"
 #include "engine/sim/simulation_errors.hpp"

@@ -6,7 +6,7 @@
 #include <limits>
 #include <optional>
 
-#include "engine/fluid/fluid_interpolation.hpp"
+#include "engine/core/fluid_interpolation.hpp"
 #include "engine/sim/free_spot.hpp"
 #include "engine/sim/push_out.hpp"
 #include "engine/sim/rigid_body_system.hpp"

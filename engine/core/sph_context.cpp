@@ -1,4 +1,4 @@
-#include "engine/fluid/sph_context.hpp"
+#include "engine/core/sph_context.hpp"
 
 namespace washout {
 

@@ -5,7 +5,7 @@
 #include <cmath>
 
 #include "engine/core/neighbor_grid.hpp"
-#include "engine/fluid/sph_context.hpp"
+#include "engine/core/sph_context.hpp"
 
 namespace washout {
 
