@@ -7,7 +7,7 @@
 
 #include "engine/core/cubic_spline_kernel.hpp"
 #include "engine/core/neighbor_grid.hpp"
-#include "engine/fluid/sph_context.hpp"
+#include "engine/core/sph_context.hpp"
 
 namespace washout {
 namespace {
