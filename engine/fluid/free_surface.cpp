@@ -1,10 +1,12 @@
 // Free-surface detection by a density threshold (METHOD.md step 2, "choose"): a particle whose
-// kernel support is partly empty has a low summation density. Such particles take P = 0.
+// kernel support is partly empty has a low summation density. P = 0 holds d0/2 beyond such a
+// particle (ghost form, pressure_poisson.cpp) or on it (surface_pressure = "on_particles").
 // With h = 1.2 d0 the top particle layer of still water sits near 0.75-0.83 rho0 and the layer
 // below near 0.95-0.97 rho0: the default threshold 0.9 keeps them well apart (0.95 made the
-// second layer flicker between Dirichlet and unknown).
+// second layer flicker between surface and interior).
 // A particle with no fluid neighbour (a drop, or one left in the closing gap between a body and
-// the floor) has no pressure equation of its own, whatever its density: it takes P = 0 too.
+// the floor) has no pressure equation of its own, whatever its density: it takes P = 0
+// (kIsolated).
 #include "engine/fluid/isph_stages.hpp"
 
 namespace washout {

@@ -13,8 +13,8 @@ namespace washout {
 // lattice gives rho0 (summation_density.cpp).
 void compute_summation_density(const SphContext& ctx, const NeighborList& list, Particles& p);
 
-// Free surface: <rho>_i < threshold * rho0, or no fluid neighbour, takes P = 0. Returns the
-// count (free_surface.cpp).
+// Free surface: <rho>_i < threshold * rho0 (kSurface), or no fluid neighbour (kIsolated, P = 0).
+// Returns the count (free_surface.cpp).
 std::size_t detect_free_surface(const SphContext& ctx, const NeighborList& list, const Particles& p,
                                 double threshold, FluidWork& work);
 
