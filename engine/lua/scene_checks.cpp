@@ -84,8 +84,7 @@ double estimate_particles(const Model& model) {
   const auto& prm = model.params;
   const int dim = prm.dim;
   const double d0 = prm.d0;
-  const int layers = prm.wall_layers > 0 ? prm.wall_layers
-                                         : static_cast<int>(std::ceil(2.0 * prm.h() / d0 - 1e-9));
+  const int layers = prm.wall_layer_count();
   double n = 0;
   for (const auto& f : model.fluids)
     for (const auto& p : f.shape.parts()) n += lattice_count(p, dim, d0, 0);

@@ -3,6 +3,7 @@
 // parameters.cpp is the single source; docs/parameters.md is generated from it by
 // `washout run --list-parameters`). Scenes may also declare parameters of their own; all are
 // overridable from the shell with --set NAME=VALUE.
+#include <cmath>
 #include <map>
 #include <set>
 #include <stdexcept>
@@ -99,6 +100,10 @@ struct SimulationParameters {
   double max_particles = 5e7;  // refused above this estimate before allocating
 
   double h() const { return h_over_d0 * d0; }
+  // Wall particle layers: wall_layers, or enough to fill the kernel support (ceil(2h / d0)).
+  int wall_layer_count() const {
+    return wall_layers > 0 ? wall_layers : static_cast<int>(std::ceil(2.0 * h() / d0 - 1e-9));
+  }
   static SimulationParameters from(const ParameterSet& set);
 };
 

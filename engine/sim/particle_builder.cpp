@@ -89,8 +89,7 @@ BuiltParticles build_particles(const Model& model) {
   const auto& prm = model.params;
   const int dim = prm.dim;
   const double d0 = prm.d0;
-  const int layers = prm.wall_layers > 0 ? prm.wall_layers
-                                         : static_cast<int>(std::ceil(2.0 * prm.h() / d0 - 1e-9));
+  const int layers = prm.wall_layer_count();
   BuiltParticles out;
   out.particles.dim = dim;
   if (model.fluids.empty())
