@@ -64,6 +64,20 @@ local function probe_series(run, probe, transform)
   return xs, ys
 end
 
+-- Squared errors of a probe series against tabulated reference points (x, y) inside the window
+-- [lo, hi] and before the run's last sample (the probe is interpolated): their sum and count.
+local function table_errors(xs, ys, reference, lo, hi)
+  local sum2, count = 0, 0
+  for k = 1, #reference.x do
+    local x = reference.x[k]
+    if x >= lo and x <= hi and x <= xs[#xs] then
+      local e = validation.interpolate(xs, ys, x) - reference.y[k]
+      sum2, count = sum2 + e * e, count + 1
+    end
+  end
+  return sum2, count
+end
+
 -- RMS of (probe - reference) over a window of the (transformed) time axis.
 --   reference = { x = {...}, y = {...} }: compared at the reference's points in the window and
 --               before the run's last sample (the probe is interpolated);
@@ -82,13 +96,7 @@ function validation.series_rms(o)
         end
       end
     else
-      for k = 1, #o.reference.x do
-        local x = o.reference.x[k]
-        if x >= lo and x <= hi and x <= xs[#xs] then
-          local e = validation.interpolate(xs, ys, x) - o.reference.y[k]
-          sum2, count = sum2 + e * e, count + 1
-        end
-      end
+      sum2, count = table_errors(xs, ys, o.reference, lo, hi)
     end
     if count < (o.min_points or 1) then
       error("validation.series_rms: " .. count .. " points of '" .. o.probe ..
@@ -107,13 +115,8 @@ function validation.pooled_rms(pieces)
       local xs, ys = probe_series(run, p.probe, p.transform)
       local lo = p.window and p.window[1] or -math.huge
       local hi = p.window and p.window[2] or math.huge
-      for k = 1, #p.reference.x do
-        local x = p.reference.x[k]
-        if x >= lo and x <= hi and x <= xs[#xs] then
-          local e = validation.interpolate(xs, ys, x) - p.reference.y[k]
-          sum2, count = sum2 + e * e, count + 1
-        end
-      end
+      local s2, n = table_errors(xs, ys, p.reference, lo, hi)
+      sum2, count = sum2 + s2, count + n
     end
     if count == 0 then error("validation.pooled_rms: no reference point in the run") end
     return math.sqrt(sum2 / count)
