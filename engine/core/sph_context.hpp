@@ -35,6 +35,12 @@ struct SphContext {
     if (periodic.any()) periodic.minimum_image(d);
   }
 
+  // V grad W_ij = gradient_weight(r) r_ij, with the lattice normalisation: the pair factor of
+  // every gradient and divergence (sph_operators.hpp).
+  double gradient_weight(double r) const {
+    return gradient_correction * volume * kernel.derivative_over_r(r);
+  }
+
   // The laplacian's pair weight 2 V (r . grad W) / (r^2 + eta^2) (METHOD.md, with r . grad W =
   // W'(r) r and the lattice normalisation); <lap f>_i = sum_j laplacian_weight (f_i - f_j).
   double laplacian_weight(double r, double r2) const {

@@ -9,6 +9,7 @@
 #include <Eigen/Dense>
 #include <algorithm>
 
+#include "engine/core/sph_operators.hpp"
 #include "engine/fluid/isph_stages.hpp"
 
 namespace washout {
@@ -20,14 +21,11 @@ namespace {
 bool gradient_correction_matrix(const SphContext& ctx, const NeighborList& list, const Particles& p,
                                 std::size_t i, Eigen::Matrix3d& L) {
   Eigen::Matrix3d M = Eigen::Matrix3d::Zero();
-  for (std::uint64_t k = list.offset[i]; k < list.offset[i + 1]; ++k) {
-    double d[3];
-    ctx.displacement(p, i, list.index[k], d);
-    const double r = std::sqrt(d[0] * d[0] + d[1] * d[1] + d[2] * d[2]);
-    const double f = ctx.volume * ctx.kernel.derivative_over_r(r);
+  for_each_neighbor(ctx, list, p, i, [&](const NeighborPair& q) {
+    const double f = ctx.volume * ctx.kernel.derivative_over_r(q.r);
     for (int a = 0; a < ctx.dim; ++a)
-      for (int b = 0; b < ctx.dim; ++b) M(a, b) -= d[a] * f * d[b];  // (x_j - x_i)_a grad_b W
-  }
+      for (int b = 0; b < ctx.dim; ++b) M(a, b) -= q.d[a] * f * q.d[b];  // (x_j - x_i)_a grad_b W
+  });
   if (ctx.dim == 2) M(2, 2) = 1.0;
   const double det = M.determinant();
   if (!(std::abs(det) > 0.05)) return false;  // full support gives det ~ 1
@@ -38,10 +36,8 @@ bool gradient_correction_matrix(const SphContext& ctx, const NeighborList& list,
 }  // namespace
 
 void correct_velocity(const SphContext& ctx, const NeighborList& list, Particles& p,
-                      const FluidWork& work, const Vec3& gravity, double dt,
-                      bool symmetric_gradient) {
+                      const FluidWork& work, const Vec3& gravity, double dt, bool symmetric_form) {
   const std::size_t n = p.fluid_count;
-  const double g_scale = ctx.gradient_correction * ctx.volume;
 #pragma omp parallel for schedule(static)
   for (std::size_t i = 0; i < n; ++i) {
     // Free-surface particles (P = 0) see neighbours on one side only: the symmetric form would
@@ -50,20 +46,17 @@ void correct_velocity(const SphContext& ctx, const NeighborList& list, Particles
     const bool surface = work.free_surface[i] != 0;
     Eigen::Matrix3d L;
     const bool corrected = surface && gradient_correction_matrix(ctx, list, p, i, L);
-    const double sign_i =
-        (symmetric_gradient && !corrected) ? 1.0 : -1.0;  // P_i + P_j or P_j - P_i
-    double grad[3] = {0, 0, 0};
     const double Pi = p.pressure[i];
-    for (std::uint64_t k = list.offset[i]; k < list.offset[i + 1]; ++k) {
-      const std::size_t j = list.index[k];
-      double d[3];
-      ctx.displacement(p, i, j, d);
-      const double r = std::sqrt(d[0] * d[0] + d[1] * d[1] + d[2] * d[2]);
-      const double Pj =
-          j < n ? p.pressure[j] : Pi + wall_pressure_jump(ctx, p, work, gravity, i, j, d, dt);
-      const double f = g_scale * ctx.kernel.derivative_over_r(r) * (Pj + sign_i * Pi);
-      for (int a = 0; a < ctx.dim; ++a) grad[a] += f * d[a];
-    }
+    // A boundary neighbour carries the virtual pressure of the Neumann wall condition.
+    const auto neighbor_pressure = [&](const NeighborPair& q) {
+      return q.j < n ? p.pressure[q.j]
+                     : Pi + wall_pressure_jump(ctx, p, work, gravity, i, q.j, q.d, dt);
+    };
+    double grad[3];
+    if (symmetric_form && !corrected)
+      symmetric_gradient(ctx, list, p, i, Pi, neighbor_pressure, grad);
+    else
+      difference_gradient(ctx, list, p, i, Pi, neighbor_pressure, grad);
     if (corrected) {
       // L already normalises the sum: undo the lattice normalisation before applying it.
       const Eigen::Vector3d g =

@@ -91,8 +91,7 @@ inline double wall_pressure_jump(const SphContext& ctx, const Particles& p, cons
 
 // Step 3, corrector: u^{n+1} = u* - (dt/rho0) <grad P> (corrector.cpp).
 void correct_velocity(const SphContext& ctx, const NeighborList& list, Particles& p,
-                      const FluidWork& work, const Vec3& gravity, double dt,
-                      bool symmetric_gradient);
+                      const FluidWork& work, const Vec3& gravity, double dt, bool symmetric_form);
 // Free-surface particles take this fraction of their neighbourhood's mean velocity (XSPH on the
 // surface only; surface_smoothing.cpp).
 void smooth_surface_velocity(const SphContext& ctx, const NeighborList& list, Particles& p,

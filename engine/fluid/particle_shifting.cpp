@@ -8,6 +8,7 @@
 // Not part of METHOD.md's projection step: an optional stabiliser (parameter shifting = A).
 #include <limits>
 
+#include "engine/core/sph_operators.hpp"
 #include "engine/fluid/isph_stages.hpp"
 
 namespace washout {
@@ -25,16 +26,12 @@ void shift_particles(const SphContext& ctx, const NeighborList& list, Particles&
     bool near_surface = work.free_surface[i] != 0;
     std::size_t nearest_solid = 0;  // nearest boundary particle (0: none)
     double nearest_r = std::numeric_limits<double>::max();
-    for (std::uint64_t k = list.offset[i]; k < list.offset[i + 1]; ++k) {
-      const std::size_t j = list.index[k];
-      near_surface = near_surface || (j < n && work.free_surface[j]);
-      double d[3];
-      ctx.displacement(p, i, j, d);
-      const double r = std::sqrt(d[0] * d[0] + d[1] * d[1] + d[2] * d[2]);
-      if (j >= n && r < nearest_r) nearest_r = r, nearest_solid = j;
-      const double f = ctx.kernel.derivative_over_r(r);
-      for (int a = 0; a < ctx.dim; ++a) grad[a] += f * d[a];
-    }
+    for_each_neighbor(ctx, list, p, i, [&](const NeighborPair& q) {
+      near_surface = near_surface || (q.j < n && work.free_surface[q.j]);
+      if (q.j >= n && q.r < nearest_r) nearest_r = q.r, nearest_solid = q.j;
+      const double f = ctx.kernel.derivative_over_r(q.r);
+      for (int a = 0; a < ctx.dim; ++a) grad[a] += f * q.d[a];
+    });
     // D = A h^2 (fixed) + A_u h |u_i| dt (Skillen et al. 2013: in proportion to the distance
     // the particle moved, so still water is left alone).
     double speed2 = 0.0;

@@ -4,6 +4,7 @@
 // normalised on the lattice. Boundary neighbours contribute their virtual-marker velocity, which
 // carries the slip condition. The sub-particle-scale stress enters as an eddy viscosity:
 // (1/rho0) div tau = div (2 nu_t S) ~ nu_t,ij <lap u> with nu_t,ij the pair average.
+#include "engine/core/sph_operators.hpp"
 #include "engine/fluid/isph_stages.hpp"
 
 namespace washout {
@@ -17,23 +18,18 @@ void predict_velocity(const SphContext& ctx, const NeighborList& list, const Par
   for (std::size_t i = 0; i < n; ++i) {
     double lap[3] = {0, 0, 0};
     const double nu_t_i = turbulent ? work.eddy_viscosity[i] : 0.0;
-    for (std::uint64_t k = list.offset[i]; k < list.offset[i + 1]; ++k) {
-      const std::size_t j = list.index[k];
-      double d[3];
-      ctx.displacement(p, i, j, d);
-      const double r2 = d[0] * d[0] + d[1] * d[1] + d[2] * d[2];
-      const double r = std::sqrt(r2);
-      double weight = ctx.laplacian_weight(r, r2);
-      const bool fluid = j < n;
+    for_each_neighbor(ctx, list, p, i, [&](const NeighborPair& q) {
+      const bool fluid = q.j < n;
+      double weight = ctx.laplacian_weight(q.r, q.r2);
       if (turbulent)
-        weight *= viscosity + 0.5 * (nu_t_i + (fluid ? work.eddy_viscosity[j] : nu_t_i));
+        weight *= viscosity + 0.5 * (nu_t_i + (fluid ? work.eddy_viscosity[q.j] : nu_t_i));
       else
         weight *= viscosity;
       for (int a = 0; a < ctx.dim; ++a) {
-        const double uj = fluid ? p.velocity[a][j] : work.marker_velocity[a][j];
+        const double uj = fluid ? p.velocity[a][q.j] : work.marker_velocity[a][q.j];
         lap[a] += weight * (p.velocity[a][i] - uj);
       }
-    }
+    });
     for (int a = 0; a < 3; ++a)
       work.u_star[a][i] = a < ctx.dim ? p.velocity[a][i] + dt * (lap[a] + gravity[a]) : 0.0;
   }

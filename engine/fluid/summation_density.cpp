@@ -1,4 +1,5 @@
 // Density by summation, METHOD.md "SPH operators": <rho>_i = sum_j m_j W_ij.
+#include "engine/core/sph_operators.hpp"
 #include "engine/fluid/isph_stages.hpp"
 
 namespace washout {
@@ -10,11 +11,8 @@ void compute_summation_density(const SphContext& ctx, const NeighborList& list, 
 #pragma omp parallel for schedule(static)
   for (std::size_t i = 0; i < n; ++i) {
     double sum = self;
-    for (std::uint64_t k = list.offset[i]; k < list.offset[i + 1]; ++k) {
-      double d[3];
-      ctx.displacement(p, i, list.index[k], d);
-      sum += ctx.mass * ctx.kernel.value(std::sqrt(d[0] * d[0] + d[1] * d[1] + d[2] * d[2]));
-    }
+    for_each_neighbor(ctx, list, p, i,
+                      [&](const NeighborPair& q) { sum += ctx.mass * ctx.kernel.value(q.r); });
     p.density[i] = sum * scale;
   }
 }

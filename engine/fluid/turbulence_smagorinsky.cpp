@@ -1,6 +1,7 @@
 // Optional sub-particle-scale turbulence (METHOD.md "Fluid": tau, Smagorinsky type):
 //   nu_t = (C_s d0)^2 |S|,  |S| = sqrt(2 S:S),  S = (grad u + grad u^T) / 2,
 // with the velocity gradient from the difference form <grad f>_i = sum_j V (f_j - f_i) grad W_ij.
+#include "engine/core/sph_operators.hpp"
 #include "engine/fluid/isph_stages.hpp"
 
 namespace washout {
@@ -10,22 +11,17 @@ void compute_eddy_viscosity(const SphContext& ctx, const NeighborList& list, con
   const std::size_t n = p.fluid_count;
   work.eddy_viscosity.assign(n, 0.0);
   const double length2 = std::pow(smagorinsky_constant * ctx.d0, 2);
-  const double scale = ctx.gradient_correction * ctx.volume;
 #pragma omp parallel for schedule(static)
   for (std::size_t i = 0; i < n; ++i) {
     double grad[3][3] = {{0, 0, 0}, {0, 0, 0}, {0, 0, 0}};  // grad[a][b] = d u_a / d x_b
-    for (std::uint64_t k = list.offset[i]; k < list.offset[i + 1]; ++k) {
-      const std::size_t j = list.index[k];
-      double d[3];
-      ctx.displacement(p, i, j, d);
-      const double r = std::sqrt(d[0] * d[0] + d[1] * d[1] + d[2] * d[2]);
-      const double f = scale * ctx.kernel.derivative_over_r(r);
+    for_each_neighbor(ctx, list, p, i, [&](const NeighborPair& q) {
+      const double f = ctx.gradient_weight(q.r);
       for (int a = 0; a < ctx.dim; ++a) {
-        const double uj = j < n ? p.velocity[a][j] : work.marker_velocity[a][j];
+        const double uj = q.j < n ? p.velocity[a][q.j] : work.marker_velocity[a][q.j];
         const double du = uj - p.velocity[a][i];
-        for (int b = 0; b < ctx.dim; ++b) grad[a][b] += du * f * d[b];
+        for (int b = 0; b < ctx.dim; ++b) grad[a][b] += du * f * q.d[b];
       }
-    }
+    });
     double ss = 0.0;
     for (int a = 0; a < ctx.dim; ++a)
       for (int b = 0; b < ctx.dim; ++b) {

@@ -8,6 +8,8 @@
 #include "engine/core/cubic_spline_kernel.hpp"
 #include "engine/core/neighbor_grid.hpp"
 #include "engine/core/sph_context.hpp"
+#include "engine/core/sph_operators.hpp"
+#include "engine/fluid/isph_stages.hpp"
 
 namespace washout {
 namespace {
@@ -122,37 +124,63 @@ struct LatticeFixture {
   }
 };
 
+// The engine's operators (engine/core/sph_operators.hpp) on f = a.x (gradient a), u = A x
+// (divergence trace A) and g = |x|^2 (laplacian 2 dim), and the summation density.
 void check_operators(int dim, double jitter, double tol_grad, double tol_lap) {
   LatticeFixture f(dim, jitter);
-  const Vec3 a(1.5, -2.0, 0.7);  // f = a.x, grad f = a; g = |x|^2, lap g = 2 dim
-  double grad_err = 0, lap_err = 0, rho_err = 0;
+  const Vec3 a(1.5, -2.0, 0.7);
+  const double A[3][3] = {{0.3, 1.1, -0.4}, {-0.7, 0.9, 0.2}, {0.5, -0.6, -1.4}};
+  const double trace = dim == 2 ? A[0][0] + A[1][1] : A[0][0] + A[1][1] + A[2][2];
+  double norm_A = 0.0;  // the divergence error is relative to the size of the velocity gradient
+  for (int r = 0; r < dim; ++r)
+    for (int c = 0; c < dim; ++c) norm_A += A[r][c] * A[r][c];
+  norm_A = std::sqrt(norm_A);
+  const auto linear = [&](std::size_t j) { return a.dot(f.p.x(j)); };
+  const auto quadratic = [&](std::size_t j) { return f.p.x(j).squaredNorm(); };
+  const auto velocity = [&](std::size_t j, double u[3]) {
+    for (int r = 0; r < 3; ++r) {
+      u[r] = 0.0;
+      for (int c = 0; c < dim; ++c) u[r] += A[r][c] * f.p.position[c][j];
+    }
+  };
+  std::vector<double> density_field;
+  {
+    Particles copy = f.p;
+    compute_summation_density(f.ctx, f.list, copy);
+    density_field = copy.density;
+  }
+  double grad_err = 0, sym_err = 0, div_err = 0, lap_err = 0, rho_err = 0;
   for (std::size_t i = 0; i < f.p.size(); ++i) {
     if (!f.interior(i)) continue;
-    double grad[3] = {0, 0, 0}, lap = 0, rho = f.ctx.mass * f.ctx.kernel.value(0);
-    const Vec3 xi = f.p.x(i);
-    for (std::uint64_t k = f.list.offset[i]; k < f.list.offset[i + 1]; ++k) {
-      const std::size_t j = f.list.index[k];
-      const Vec3 xj = f.p.x(j), d = xi - xj;
-      const double r = d.norm();
-      rho += f.ctx.mass * f.ctx.kernel.value(r);
-      // difference gradient: sum V (f_j - f_i) grad W_ij
-      const double g = f.ctx.gradient_correction * f.ctx.volume * f.ctx.kernel.derivative_over_r(r);
-      for (int c = 0; c < dim; ++c) grad[c] += g * (a.dot(xj) - a.dot(xi)) * d[c];
-      // laplacian: sum V 2 (r . grad W)/(r^2 + eta^2) (g_i - g_j)
-      lap += f.ctx.laplacian_correction * f.ctx.volume * 2 * f.ctx.kernel.derivative(r) * r /
-             (r * r + f.ctx.eta2) * (xi.squaredNorm() - xj.squaredNorm());
-    }
-    for (int c = 0; c < dim; ++c)
+    double grad[3], sym[3], u_i[3];
+    difference_gradient(
+        f.ctx, f.list, f.p, i, linear(i), [&](const NeighborPair& q) { return linear(q.j); }, grad);
+    // The symmetric form of a constant field is zero on a full support; of a linear field it is
+    // the gradient plus 2 f_i sum V grad W_ij, which vanishes on the lattice.
+    symmetric_gradient(
+        f.ctx, f.list, f.p, i, linear(i), [&](const NeighborPair& q) { return linear(q.j); }, sym);
+    velocity(i, u_i);
+    const double div = divergence(f.ctx, f.list, f.p, i, u_i,
+                                  [&](const NeighborPair& q, double u[3]) { velocity(q.j, u); });
+    const double lap = laplacian(f.ctx, f.list, f.p, i, quadratic(i),
+                                 [&](const NeighborPair& q) { return quadratic(q.j); });
+    for (int c = 0; c < dim; ++c) {
       grad_err = std::max(grad_err, std::abs(grad[c] - a[c]) / a.norm());
+      if (jitter == 0) sym_err = std::max(sym_err, std::abs(sym[c] - a[c]) / a.norm());
+    }
+    div_err = std::max(div_err, std::abs(div - trace) / norm_A);
     lap_err = std::max(lap_err, std::abs(lap - 2 * dim) / (2 * dim));
-    rho_err = std::max(rho_err, std::abs(rho / f.ctx.full_support_density - 1));
+    rho_err = std::max(rho_err, std::abs(density_field[i] / f.ctx.rho0 - 1));
   }
   std::printf(
-      "dim %d jitter %.2f d0: gradient error %.2e, laplacian error %.2e, density error %.2e\n", dim,
-      jitter, grad_err, lap_err, rho_err);
+      "dim %d jitter %.2f d0: gradient error %.2e (symmetric %.2e), divergence %.2e, laplacian "
+      "%.2e, density %.2e\n",
+      dim, jitter, grad_err, sym_err, div_err, lap_err, rho_err);
   EXPECT_LT(grad_err, tol_grad);
+  EXPECT_LT(div_err, tol_grad);
   EXPECT_LT(lap_err, tol_lap);
   if (jitter == 0) {
+    EXPECT_LT(sym_err, 1e-12);
     EXPECT_LT(rho_err, 1e-12);
   }
 }

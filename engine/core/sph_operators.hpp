@@ -1,0 +1,94 @@
+#pragma once
+// The SPH operators of METHOD.md ("SPH operators"), each under its own name, built on one
+// neighbour-pair walk. A stage that needs an operator calls it with a function that gives the
+// value a neighbour j carries: a fluid particle its own, a boundary particle its virtual-marker
+// value (or i's own value, so that it adds nothing to a difference form). So every stage and
+// every unit test sums the same terms in the same order.
+//
+//   gradient (difference)  <grad f>_i = sum_j V (f_j - f_i) grad W_ij
+//   gradient (symmetric)   <grad f>_i = sum_j V (f_i + f_j) grad W_ij
+//   divergence             <div u>_i  = sum_j V (u_j - u_i) . grad W_ij
+//   laplacian              <lap f>_i  = sum_j V 2 (r_ij . grad W_ij) / (|r_ij|^2 + eta^2) (f_i -
+//   f_j)
+//
+// with equal volumes V = m / rho0 (which is what keeps the PPE symmetric), so the symmetric
+// gradient rho_i sum_j m_j (f_i/rho_i^2 + f_j/rho_j^2) grad W_ij reads as above, and with the
+// lattice normalisation of SphContext (exact for linear gradients and quadratic laplacians on
+// the initial lattice).
+#include <cmath>
+#include <cstddef>
+
+#include "engine/core/neighbor_grid.hpp"
+#include "engine/core/sph_context.hpp"
+
+namespace washout {
+
+// One neighbour j of particle i: r_ij = x_i - x_j (periodic minimum image), |r_ij|^2, |r_ij|.
+struct NeighborPair {
+  std::size_t j;
+  double d[3];
+  double r2, r;
+};
+
+// Calls visit(pair) for every neighbour j of i, in the list's order.
+template <class Visit>
+inline void for_each_neighbor(const SphContext& ctx, const NeighborList& list, const Particles& p,
+                              std::size_t i, Visit&& visit) {
+  for (std::uint64_t k = list.offset[i]; k < list.offset[i + 1]; ++k) {
+    NeighborPair q;
+    q.j = list.index[k];
+    ctx.displacement(p, i, q.j, q.d);
+    q.r2 = q.d[0] * q.d[0] + q.d[1] * q.d[1] + q.d[2] * q.d[2];
+    q.r = std::sqrt(q.r2);
+    visit(q);
+  }
+}
+
+// <grad f>_i, difference form. value(pair) is f_j.
+template <class Value>
+inline void difference_gradient(const SphContext& ctx, const NeighborList& list, const Particles& p,
+                                std::size_t i, double f_i, Value&& value, double grad[3]) {
+  grad[0] = grad[1] = grad[2] = 0.0;
+  for_each_neighbor(ctx, list, p, i, [&](const NeighborPair& q) {
+    const double f = ctx.gradient_weight(q.r) * (value(q) - f_i);
+    for (int a = 0; a < ctx.dim; ++a) grad[a] += f * q.d[a];
+  });
+}
+
+// <grad f>_i, symmetric (momentum-conserving) form. value(pair) is f_j.
+template <class Value>
+inline void symmetric_gradient(const SphContext& ctx, const NeighborList& list, const Particles& p,
+                               std::size_t i, double f_i, Value&& value, double grad[3]) {
+  grad[0] = grad[1] = grad[2] = 0.0;
+  for_each_neighbor(ctx, list, p, i, [&](const NeighborPair& q) {
+    const double f = ctx.gradient_weight(q.r) * (value(q) + f_i);
+    for (int a = 0; a < ctx.dim; ++a) grad[a] += f * q.d[a];
+  });
+}
+
+// <div u>_i. value(pair, u_j) writes u_j; u_i is given.
+template <class Value>
+inline double divergence(const SphContext& ctx, const NeighborList& list, const Particles& p,
+                         std::size_t i, const double u_i[3], Value&& value) {
+  double div = 0.0;
+  for_each_neighbor(ctx, list, p, i, [&](const NeighborPair& q) {
+    double u_j[3] = {0, 0, 0};
+    value(q, u_j);
+    const double f = ctx.gradient_weight(q.r);
+    for (int a = 0; a < ctx.dim; ++a) div += f * q.d[a] * (u_j[a] - u_i[a]);
+  });
+  return div;
+}
+
+// <lap f>_i, Brookshaw's form of METHOD.md. value(pair) is f_j.
+template <class Value>
+inline double laplacian(const SphContext& ctx, const NeighborList& list, const Particles& p,
+                        std::size_t i, double f_i, Value&& value) {
+  double lap = 0.0;
+  for_each_neighbor(ctx, list, p, i, [&](const NeighborPair& q) {
+    lap += ctx.laplacian_weight(q.r, q.r2) * (f_i - value(q));
+  });
+  return lap;
+}
+
+}  // namespace washout
