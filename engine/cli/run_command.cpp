@@ -50,10 +50,23 @@ std::string format_default(const ParameterValue& v) {
   return o + "}";
 }
 
+// The body reports of a run that ended with an error: best effort, the error is what to report.
+void try_report_bodies(RunOutcome& outcome, const std::string& out_dir, const Vec3& gravity,
+                       std::FILE* log) {
+  try {
+    outcome.bodies = report_bodies(outcome.h5_path, out_dir, gravity, log);
+  } catch (const std::exception& e) {
+    std::fprintf(log, "note: no body reports: %s\n", e.what());
+  }
+}
+
 }  // namespace
 
 RunOutcome run_scene(const RunRequest& request) {
   RunOutcome outcome;
+  bool run_started = false;  // the run file exists and holds this run's steps
+  Vec3 gravity = Vec3::Zero();
+  std::string report_dir;
   try {
     lua::LuaScene scene(request.scene_path, request.overrides, request.lua_limits);
     Model& model = scene.model();
@@ -70,8 +83,10 @@ RunOutcome run_scene(const RunRequest& request) {
       return outcome;
     }
     outcome.h5_path = (std::filesystem::path(out_dir) / model.output.file_name).string();
+    report_dir = out_dir;
     const lua::FrameRequest frames = scene.frames();
     Simulation sim(model);
+    gravity = sim.params().gravity;
     ProgressDisplay progress(request.live_progress, request.log);
     std::vector<RunObserver*> observers = {&progress};
     if (auto* callbacks = scene.callbacks()) observers.push_back(callbacks);
@@ -83,9 +98,10 @@ RunOutcome run_scene(const RunRequest& request) {
     }
     InterruptObserver interrupt;  // last, so that its reason names the signal
     observers.push_back(&interrupt);
+    run_started = true;
     outcome.summary = sim.run(outcome.h5_path, observers);
     // Each body's CSV and wash-out summary, also after an unstable run (its file stays readable).
-    outcome.bodies = report_bodies(outcome.h5_path, out_dir, sim.params().gravity, request.log);
+    outcome.bodies = report_bodies(outcome.h5_path, out_dir, gravity, request.log);
     if (outcome.summary.status == RunStatus::Unstable) outcome.exit_code = kUnstable;
     const bool interrupted = interrupt_signal() != 0;
     // Cost and, for a completed validation scene, the error against its reference.
@@ -108,6 +124,9 @@ RunOutcome run_scene(const RunRequest& request) {
     }
   } catch (const SceneError& e) {
     outcome.exit_code = kBadInput;
+    // A callback or motion function that failed mid-run: the steps before it are in the file,
+    // and their body reports are made as after any other stopped run.
+    if (run_started) try_report_bodies(outcome, report_dir, gravity, request.log);
     std::string where = e.where();
     const std::string what = e.what();
     // Lua messages already start with "file:line:"; others get the location prefixed.

@@ -91,47 +91,58 @@ RunSummary Simulation::run(const std::string& output_path,
 
   double next_frame = prm.output_interval;
   const double tolerance = 1e-9 * prm.output_interval;
-  while (keep_going && time_ < prm.end_time - tolerance) {
-    StepReport report;
-    try {
-      report = step_until(std::min(next_frame, prm.end_time));
-    } catch (const UnstableError& e) {
-      std::ostringstream m;
-      m << "unstable at t = " << time_ << " s (step " << step_ + 1 << "): " << e.what() << ". ";
-      if (writer) {
-        flush_series(*writer);
-        m << "The last good state is frame " << frame - 1 << " (t = " << summary.last_frame_time
-          << " s) in " << output_path << ".";
+  try {
+    while (keep_going && time_ < prm.end_time - tolerance) {
+      StepReport report;
+      try {
+        report = step_until(std::min(next_frame, prm.end_time));
+      } catch (const UnstableError& e) {
+        std::ostringstream m;
+        m << "unstable at t = " << time_ << " s (step " << step_ + 1 << "): " << e.what() << ". ";
+        if (writer) {
+          flush_series(*writer);
+          m << "The last good state is frame " << frame - 1 << " (t = " << summary.last_frame_time
+            << " s) in " << output_path << ".";
+        }
+        summary.status = RunStatus::Unstable;
+        summary.message = m.str();
+        break;
       }
-      summary.status = RunStatus::Unstable;
-      summary.message = m.str();
-      break;
+      series_time_.push_back(report.time);
+      series_step_.push_back(report.step);
+      series_dt_.push_back(report.dt);
+      series_iterations_.push_back(report.ppe_iterations);
+      series_residual_.push_back(report.ppe_residual);
+      series_wall_.push_back(report.wall_seconds);
+      series_energy_.push_back(report.kinetic_energy);
+      series_substeps_.push_back(report.substeps);
+      series_free_surface_.push_back(static_cast<std::int64_t>(report.free_surface_particles));
+      series_film_.push_back(static_cast<std::int64_t>(report.squeeze_film_particles));
+      probe_series_.insert(probe_series_.end(), probe_values_.begin(), probe_values_.end());
+      if (bodies_) bodies_->record(report.time);
+      {
+        auto s = timer_.measure("callbacks");
+        for (auto* o : observers)
+          if (!o->on_step(*this, report)) keep_going = false, stopper = o;
+      }
+      const bool at_frame = time_ >= next_frame - tolerance || time_ >= prm.end_time - tolerance;
+      if (at_frame || !keep_going) {
+        emit_frame();
+        while (next_frame <= time_ + tolerance) next_frame += prm.output_interval;
+        auto s = timer_.measure("callbacks");
+        for (auto* o : observers)
+          if (!o->on_frame(*this, frame - 1)) keep_going = false, stopper = o;
+      }
     }
-    series_time_.push_back(report.time);
-    series_step_.push_back(report.step);
-    series_dt_.push_back(report.dt);
-    series_iterations_.push_back(report.ppe_iterations);
-    series_residual_.push_back(report.ppe_residual);
-    series_wall_.push_back(report.wall_seconds);
-    series_energy_.push_back(report.kinetic_energy);
-    series_substeps_.push_back(report.substeps);
-    series_free_surface_.push_back(static_cast<std::int64_t>(report.free_surface_particles));
-    series_film_.push_back(static_cast<std::int64_t>(report.squeeze_film_particles));
-    probe_series_.insert(probe_series_.end(), probe_values_.begin(), probe_values_.end());
-    if (bodies_) bodies_->record(report.time);
-    {
-      auto s = timer_.measure("callbacks");
-      for (auto* o : observers)
-        if (!o->on_step(*this, report)) keep_going = false, stopper = o;
+  } catch (...) {
+    // A scene error mid-run (a callback or a motion function that failed): the steps done so
+    // far stay in the file, so that the body reports cover them.
+    try {
+      if (writer) flush_series(*writer);
+    } catch (const io::OutputError&) {
+      // the scene's error is the one to report
     }
-    const bool at_frame = time_ >= next_frame - tolerance || time_ >= prm.end_time - tolerance;
-    if (at_frame || !keep_going) {
-      emit_frame();
-      while (next_frame <= time_ + tolerance) next_frame += prm.output_interval;
-      auto s = timer_.measure("callbacks");
-      for (auto* o : observers)
-        if (!o->on_frame(*this, frame - 1)) keep_going = false, stopper = o;
-    }
+    throw;
   }
   if (summary.status != RunStatus::Unstable && stopper) {
     summary.status = RunStatus::StoppedByScene;

@@ -4,6 +4,7 @@
 #include <gtest/gtest.h>
 
 #include <filesystem>
+#include <fstream>
 
 #include "engine/io/run_file_reader.hpp"
 #include "reliability/run_washout.hpp"
@@ -79,6 +80,30 @@ TEST(Interrupt, SecondSignalEndsAtOnceAndLeavesAReadableFile) {
   io::RunFileReader reader((out / "interrupt_slow.h5").string());
   EXPECT_GE(reader.frame_count(), 2u);
   EXPECT_GT(reader.read_frame(1).count, 0u);
+}
+
+// Not a signal but a scene error during the run (exit 1): the steps before it stay in the file,
+// flushed, and get their body report as after any other stopped run.
+TEST(Interrupt, ALuaErrorMidRunKeepsTheStepsBeforeItAndTheirBodyReport) {
+  const fs::path out = fs::path(WASHOUT_TEST_OUTPUT_DIR) / "midrun_lua_error";
+  fs::remove_all(out);
+  const std::string scene = std::string(WASHOUT_SOURCE_DIR) + "/tests/data/body_late_error.lua";
+  const auto r = test::run_washout({"run", scene, "--out", out.string(), "--quiet"},
+                                   (out.string() + ".log"), 60);
+  EXPECT_EQ(r.status, 1) << r.output;
+  EXPECT_NE(r.output.find("the scene's own check failed"), std::string::npos) << r.output;
+  io::RunFileReader reader((out / "body_late_error.h5").string());
+  // The error comes in step 50 (t > 0.05 s): its row and the 49 before it, not only the 40 of
+  // the last frame.
+  const auto time = reader.read_doubles("/stats/time");
+  ASSERT_EQ(time.size(), 50u);
+  EXPECT_EQ(reader.read_doubles("/bodies/block/time").size(), 50u);
+  std::ifstream csv(out / "block.csv");
+  ASSERT_TRUE(csv) << "no body report after the error";
+  int lines = 0;
+  for (std::string line; std::getline(csv, line);) ++lines;
+  EXPECT_EQ(lines, 51);  // the header and one row per step
+  EXPECT_NE(r.output.find("block: wave arrives"), std::string::npos) << r.output;
 }
 
 }  // namespace
