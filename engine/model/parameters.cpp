@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdio>
 #include <iomanip>
 #include <sstream>
 
@@ -335,6 +336,19 @@ SimulationParameters SimulationParameters::from(const ParameterSet& set) {
   p.shifting_with_speed = non_negative("shifting_with_speed");
   p.surface_smoothing = in_unit_interval("surface_smoothing");
   p.output_interval = positive("output_interval");
+  // Every frame (and the end) is reached by at least one step, and an adaptive step may not be
+  // shorter than dt_min: a frame or an end sooner than that would stop the run as "unstable".
+  for (const char* name : {"output_interval", "end_time"}) {
+    const double v = set.number(name);
+    if (p.dt == 0 && v < p.dt_min) {
+      char text[160];
+      std::snprintf(text, sizeof text,
+                    "parameter '%s' = %g s is shorter than dt_min = %g s, the shortest step an "
+                    "adaptive run may take",
+                    name, v, p.dt_min);
+      throw ParameterError(name, text);
+    }
+  }
   p.max_speed = non_negative("max_speed");
   p.periodic = set.text("periodic");
   for (char c : p.periodic)

@@ -150,7 +150,8 @@ double Simulation::choose_time_step(double until) const {
   // Land on the next frame time with at most two equal steps (no sliver steps).
   const double remaining = until - time_;
   if (remaining > 0) {
-    const double steps = std::ceil(remaining / dt - 1e-9);
+    // At least one: a remainder below 1e-9 dt would otherwise give 0 steps and dt = inf.
+    const double steps = std::max(1.0, std::ceil(remaining / dt - 1e-9));
     if (steps <= 2) dt = remaining / steps;
   }
   return dt;
@@ -163,9 +164,11 @@ StepReport Simulation::step_until(double until) {
   const auto wall_start = std::chrono::steady_clock::now();
   StepInProgress now;
   now.dt = choose_time_step(until);
-  if (prm.dt == 0 && now.dt < prm.dt_min)
-    throw UnstableError("the adaptive time step fell to " + std::to_string(now.dt) +
-                        " s, below dt_min = " + std::to_string(prm.dt_min) + " s");
+  if (prm.dt == 0 && now.dt < prm.dt_min) {
+    std::ostringstream m;
+    m << "the adaptive time step fell to " << now.dt << " s, below dt_min = " << prm.dt_min << " s";
+    throw UnstableError(m.str());
+  }
   now.t_new = time_ + now.dt;
   for (const Stage stage : plan_) {
     auto timing = timer_.measure(stage_name(stage));
