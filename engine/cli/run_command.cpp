@@ -6,6 +6,7 @@
 #include <cmath>
 #include <cstring>
 #include <filesystem>
+#include <optional>
 #include <stdexcept>
 #include <vector>
 
@@ -13,6 +14,7 @@
 #include "engine/cli/frame_output.hpp"
 #include "engine/cli/interrupt.hpp"
 #include "engine/cli/progress_display.hpp"
+#include "engine/cli/restart.hpp"
 #include "engine/io/run_file_reader.hpp"
 #include "engine/io/run_file_writer.hpp"
 
@@ -21,6 +23,7 @@ namespace {
 
 const char* kRunUsage =
     "usage: washout run SCENE.lua [--out DIR] [--set NAME=VALUE ...] [--threads N] [--quiet]\n"
+    "                             [--restart RUN.h5]\n"
     "       washout run --list-parameters\n"
     "\n"
     "Runs a scene and writes one HDF5 file (plus its .xdmf and, if the scene asks, PNG frames)\n"
@@ -29,6 +32,8 @@ const char* kRunUsage =
     "  --set NAME=VALUE   override a scene or engine parameter (repeatable), e.g. --set d0=0.005\n"
     "  --threads N        OpenMP threads (default: the scene's `threads`, else all cores)\n"
     "  --quiet            one line per output frame instead of a live progress line\n"
+    "  --restart RUN.h5   continue that run of this scene (same --set values; end_time may\n"
+    "                     change) from its last complete frame, in RUN.h5 itself\n"
     "  --list-parameters  print every engine parameter with its unit, default and meaning\n"
     "  --lua-time-limit S     stop (exit 1) the scene script or a callback or motion function\n"
     "                         that has not returned after S seconds (default 60)\n"
@@ -72,9 +77,40 @@ RunOutcome run_scene(const RunRequest& request) {
     Model& model = scene.model();
     const int threads = request.threads > 0 ? request.threads : model.params.threads;
     if (threads > 0) omp_set_num_threads(threads);
-    const std::string out_dir = request.out_dir.empty()
-                                    ? (std::filesystem::path("runs") / model.scene_name).string()
-                                    : request.out_dir;
+    std::string out_dir = request.out_dir.empty()
+                              ? (std::filesystem::path("runs") / model.scene_name).string()
+                              : request.out_dir;
+    std::optional<io::Checkpoint> resume;
+    if (!request.restart_path.empty()) {
+      // The run goes on in its own file; body CSVs and PNG frames beside it.
+      namespace fs = std::filesystem;
+      const fs::path folder = fs::path(request.restart_path).parent_path();
+      std::error_code same_error;
+      if (!request.out_dir.empty() &&
+          !fs::equivalent(folder.empty() ? "." : folder, request.out_dir, same_error)) {
+        outcome.exit_code = kBadInput;
+        outcome.error = "--restart continues " + request.restart_path +
+                        " in its own folder; --out " + request.out_dir + " names another";
+        return outcome;
+      }
+      resume = load_restart(request.restart_path, model);
+      out_dir = folder.empty() ? "." : folder.string();
+      std::fprintf(request.log, "continuing %s from frame %lld (t = %.9g s, step %lld)\n",
+                   request.restart_path.c_str(), static_cast<long long>(resume->frame),
+                   resume->number("time"), static_cast<long long>(resume->count("step")));
+      const long long threads_then = resume->count("threads");
+      const int threads_now = omp_get_max_threads();
+      if (threads_then != threads_now)
+        std::fprintf(request.log,
+                     "note: that run used %lld threads, this one %d: the continuation is not "
+                     "bitwise the one an uninterrupted run would have made\n",
+                     threads_then, threads_now);
+      if (resume->number("time") >= model.params.end_time - 1e-9 * model.params.output_interval)
+        std::fprintf(request.log,
+                     "note: the run already reached end_time = %g s; give a later one "
+                     "(--set end_time=...) to go on\n",
+                     model.params.end_time);
+    }
     std::error_code ec;
     std::filesystem::create_directories(out_dir, ec);
     if (ec) {
@@ -82,7 +118,8 @@ RunOutcome run_scene(const RunRequest& request) {
       outcome.error = "cannot create output folder '" + out_dir + "': " + ec.message();
       return outcome;
     }
-    outcome.h5_path = (std::filesystem::path(out_dir) / model.output.file_name).string();
+    outcome.h5_path = resume ? request.restart_path
+                             : (std::filesystem::path(out_dir) / model.output.file_name).string();
     report_dir = out_dir;
     const lua::FrameRequest frames = scene.frames();
     Simulation sim(model);
@@ -99,7 +136,7 @@ RunOutcome run_scene(const RunRequest& request) {
     InterruptObserver interrupt;  // last, so that its reason names the signal
     observers.push_back(&interrupt);
     run_started = true;
-    outcome.summary = sim.run(outcome.h5_path, observers);
+    outcome.summary = sim.run(outcome.h5_path, observers, resume ? &*resume : nullptr);
     // Each body's CSV and wash-out summary, also after an unstable run (its file stays readable).
     outcome.bodies = report_bodies(outcome.h5_path, out_dir, gravity, request.log);
     if (outcome.summary.status == RunStatus::Unstable) outcome.exit_code = kUnstable;
@@ -122,6 +159,12 @@ RunOutcome run_scene(const RunRequest& request) {
       outcome.error =
           outcome.summary.message + when + "; every frame up to then is in " + outcome.h5_path;
     }
+  } catch (const RestartError& e) {
+    outcome.exit_code = kBadInput;
+    outcome.error = e.what();
+  } catch (const io::CheckpointError& e) {  // the state does not fit the scene's particles
+    outcome.exit_code = kBadInput;
+    outcome.error = "cannot restart from " + request.restart_path + ": " + std::string(e.what());
   } catch (const SceneError& e) {
     outcome.exit_code = kBadInput;
     // A callback or motion function that failed mid-run: the steps before it are in the file,
@@ -200,6 +243,8 @@ int run_command(int argc, char** argv) {
         return kBadInput;
       }
       (arg == "--lua-time-limit" ? request.lua_limits.seconds : request.lua_limits.memory_mib) = x;
+    } else if (arg == "--restart") {
+      request.restart_path = value("--restart");
     } else if (arg == "--quiet" || arg == "-q") {
       quiet = true;
     } else if (!arg.empty() && arg[0] == '-') {

@@ -16,7 +16,8 @@ enum ExitCode { kSuccess = 0, kBadInput = 1, kUnstable = 2, kOutputFailed = 3, k
 
 struct RunRequest {
   std::string scene_path;
-  std::string out_dir;  // empty: runs/<scene name>
+  std::string out_dir;       // empty: runs/<scene name> (with restart_path: that file's folder)
+  std::string restart_path;  // --restart RUN.h5: continue that run in that file
   lua::Overrides overrides;
   int threads = 0;  // 0: the scene's `threads` parameter, else all cores
   bool live_progress = false;

@@ -4,6 +4,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdio>
 #include <filesystem>
 
 namespace washout::io {
@@ -278,6 +279,104 @@ std::vector<std::size_t> RunFileReader::shape(const std::string& dataset_path) c
   H5Sclose(space);
   H5Dclose(set);
   return {dims.begin(), dims.end()};
+}
+
+namespace {
+
+herr_t collect_attribute_name(hid_t, const char* name, const H5A_info_t*, void* data) {
+  static_cast<std::vector<std::string>*>(data)->push_back(name);
+  return 0;
+}
+
+// A checkpoint slot's frame, or -1 unless it is marked complete.
+std::int64_t complete_frame(hid_t file, const std::string& slot) {
+  if (!exists(file, slot)) return -1;
+  hid_t g = H5Gopen2(file, slot.c_str(), H5P_DEFAULT);
+  if (g < 0) return -1;
+  std::int64_t frame = -1;
+  std::int32_t complete = 0;
+  if (H5Aexists(g, "complete") > 0 && H5Aexists(g, "frame") > 0) {
+    hid_t a = H5Aopen(g, "complete", H5P_DEFAULT);
+    if (H5Aread(a, H5T_NATIVE_INT32, &complete) < 0) complete = 0;
+    H5Aclose(a);
+    a = H5Aopen(g, "frame", H5P_DEFAULT);
+    if (complete != 1 || H5Aread(a, H5T_NATIVE_INT64, &frame) < 0) frame = -1;
+    H5Aclose(a);
+  }
+  H5Gclose(g);
+  return frame;
+}
+
+}  // namespace
+
+std::optional<Checkpoint> RunFileReader::checkpoint() const {
+  std::string best;
+  std::int64_t best_frame = -1;
+  for (const char* slot : {"/checkpoint/a", "/checkpoint/b"}) {
+    const std::int64_t frame = complete_frame(file_, slot);
+    // Its frame must be in the file too (a frame is written before its checkpoint).
+    char name[32];
+    std::snprintf(name, sizeof name, "%06lld", static_cast<long long>(frame));
+    const bool present = frame >= 0 && std::binary_search(frame_names_.begin(), frame_names_.end(),
+                                                          std::string(name));
+    if (present && frame > best_frame) best = slot, best_frame = frame;
+  }
+  if (best_frame < 0) return std::nullopt;
+  Checkpoint c;
+  c.frame = best_frame;
+  hid_t g = H5Gopen2(file_, best.c_str(), H5P_DEFAULT);
+  std::vector<std::string> attributes;
+  H5Aiterate2(g, H5_INDEX_NAME, H5_ITER_INC, nullptr, collect_attribute_name, &attributes);
+  const std::string where = path_ + ":" + best;
+  for (const auto& name : attributes) {
+    if (name == "complete" || name == "frame") continue;
+    hid_t a = H5Aopen(g, name.c_str(), H5P_DEFAULT);
+    hid_t type = H5Aget_type(a);
+    const H5T_class_t type_class = H5Tget_class(type);
+    H5Tclose(type);
+    herr_t status = -1;
+    if (type_class == H5T_FLOAT) {
+      status = H5Aread(a, H5T_NATIVE_DOUBLE, &c.numbers[name]);
+    } else if (type_class == H5T_INTEGER) {
+      status = H5Aread(a, H5T_NATIVE_INT64, &c.counts[name]);
+    }
+    H5Aclose(a);
+    if (status < 0) {
+      H5Gclose(g);
+      throw RunFileError(where + ": cannot read attribute " + name);
+    }
+  }
+  const auto format = c.counts.find("format");
+  if (format == c.counts.end() || format->second != Checkpoint::kFormat) {
+    H5Gclose(g);
+    throw RunFileError(
+        where + ": a checkpoint of format " +
+        (format == c.counts.end() ? std::string("?") : std::to_string(format->second)) +
+        "; this washout continues format " + std::to_string(Checkpoint::kFormat));
+  }
+  c.counts.erase("format");
+  std::vector<std::string> datasets;
+  H5Literate(g, H5_INDEX_NAME, H5_ITER_INC, nullptr, collect_name, &datasets);
+  H5Gclose(g);
+  for (const auto& name : datasets) {
+    const std::string path = best + "/" + name;
+    hid_t set = H5Dopen2(file_, path.c_str(), H5P_DEFAULT);
+    if (set < 0) throw RunFileError(where + ": " + name + " is not a dataset");
+    hid_t type = H5Dget_type(set);
+    const H5T_class_t type_class = H5Tget_class(type);
+    const std::size_t size = H5Tget_size(type);
+    H5Tclose(type);
+    H5Dclose(set);
+    if (type_class == H5T_FLOAT)
+      c.reals[name] = read_all<double>(file_, path, H5T_NATIVE_DOUBLE, path_);
+    else if (type_class == H5T_INTEGER && size == 1)
+      c.bytes[name] = read_all<std::uint8_t>(file_, path, H5T_NATIVE_UINT8, path_);
+    else if (type_class == H5T_INTEGER)
+      c.integers[name] = read_all<std::int64_t>(file_, path, H5T_NATIVE_INT64, path_);
+    else
+      throw RunFileError(where + ": " + name + " is neither numbers nor integers");
+  }
+  return c;
 }
 
 }  // namespace washout::io

@@ -3,11 +3,13 @@
 // Used by `washout render`, by scene tests and by studies. Errors throw RunFileError
 // with the file name and the missing object.
 #include <cstdint>
+#include <optional>
 #include <stdexcept>
 #include <string>
 #include <vector>
 
 #include "engine/core/particle_view.hpp"
+#include "engine/io/checkpoint.hpp"
 
 namespace washout::io {
 
@@ -58,6 +60,10 @@ class RunFileReader {
   // A whole dataset as doubles, flattened row-major, e.g. "/stats/time", "/bodies/g/position".
   std::vector<double> read_doubles(const std::string& dataset_path) const;
   std::vector<std::size_t> shape(const std::string& dataset_path) const;
+  // The state of the last frame with a complete checkpoint (/checkpoint/a or /b, whichever is
+  // newer and whole), or nothing when the file has none. Throws for a checkpoint of another
+  // format.
+  std::optional<Checkpoint> checkpoint() const;
 
  private:
   std::string path_;

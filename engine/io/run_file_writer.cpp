@@ -2,7 +2,9 @@
 
 #include <hdf5.h>
 
+#include <algorithm>
 #include <cstdio>
+#include <cstdlib>
 #include <filesystem>
 #include <fstream>
 #include <sstream>
@@ -71,6 +73,100 @@ void write_dataset(hid_t group, const std::string& name, hid_t type, const std::
   H5Sclose(space);
 }
 
+// An attribute written anew: deleted first if the object has it already.
+void replace_attribute(hid_t object, const std::string& name, hid_t type, const void* value) {
+  if (H5Aexists(object, name.c_str()) > 0) H5Adelete(object, name.c_str());
+  write_attribute(object, name, type, value);
+}
+
+herr_t collect_attribute(hid_t, const char* name, const H5A_info_t*, void* data) {
+  static_cast<std::vector<std::string>*>(data)->push_back(name);
+  return 0;
+}
+
+herr_t collect_link(hid_t, const char* name, const H5L_info_t*, void* data) {
+  static_cast<std::vector<std::string>*>(data)->push_back(name);
+  return 0;
+}
+
+std::vector<std::string> attribute_names(hid_t object) {
+  std::vector<std::string> names;
+  H5Aiterate2(object, H5_INDEX_NAME, H5_ITER_INC, nullptr, collect_attribute, &names);
+  return names;
+}
+
+std::vector<std::string> child_names(hid_t group) {
+  std::vector<std::string> names;
+  H5Literate(group, H5_INDEX_NAME, H5_ITER_INC, nullptr, collect_link, &names);
+  return names;
+}
+
+// The root attributes the writer puts there when it creates a file.
+bool is_header_attribute(const std::string& name) {
+  for (const char* h :
+       {"washout_version", "scene_name", "scene_source", "parameters", "dim", "d0", "h", "dt"})
+    if (name == h) return true;
+  return false;
+}
+
+// Every dataset below `group` (recursively) with more than `rows` rows is cut to `rows`.
+void cut_series(hid_t file, const std::string& group, std::size_t rows) {
+  hid_t g = H5Gopen2(file, group.c_str(), H5P_DEFAULT);
+  if (g < 0) return;
+  for (const auto& name : child_names(g)) {
+    const std::string path = group + "/" + name;
+    H5O_info_t info;
+    if (H5Oget_info_by_name(file, path.c_str(), &info, H5P_DEFAULT) < 0) continue;
+    if (info.type == H5O_TYPE_GROUP) {
+      cut_series(file, path, rows);
+    } else if (info.type == H5O_TYPE_DATASET) {
+      hid_t set = H5Dopen2(file, path.c_str(), H5P_DEFAULT);
+      hid_t space = H5Dget_space(set);
+      hsize_t dims[2] = {0, 0};
+      const int rank = H5Sget_simple_extent_ndims(space);
+      H5Sget_simple_extent_dims(space, dims, nullptr);
+      H5Sclose(space);
+      if (rank >= 1 && dims[0] > rows) {
+        dims[0] = rows;
+        check(H5Dset_extent(set, dims), "cut " + path + " to " + std::to_string(rows) + " rows");
+      }
+      H5Dclose(set);
+    }
+  }
+  H5Gclose(g);
+}
+
+// One array of a checkpoint: written into the dataset of that name if it has the same type and
+// size (a checkpoint slot is rewritten in place every other frame), else created anew.
+void write_state_array(hid_t group, const std::string& name, hid_t type, const void* data,
+                       std::size_t size) {
+  if (H5Lexists(group, name.c_str(), H5P_DEFAULT) > 0) {
+    hid_t set = H5Dopen2(group, name.c_str(), H5P_DEFAULT);
+    hid_t space = H5Dget_space(set);
+    hid_t stored = H5Dget_type(set);
+    const bool same = H5Sget_simple_extent_npoints(space) == static_cast<hssize_t>(size) &&
+                      H5Tequal(stored, type) > 0;
+    H5Tclose(stored);
+    H5Sclose(space);
+    if (same) {
+      if (size > 0)
+        check(H5Dwrite(set, type, H5S_ALL, H5S_ALL, H5P_DEFAULT, data), "write checkpoint " + name);
+      H5Dclose(set);
+      return;
+    }
+    H5Dclose(set);
+    check(H5Ldelete(group, name.c_str(), H5P_DEFAULT), "replace checkpoint " + name);
+  }
+  hsize_t dims[1] = {size};
+  hid_t space = H5Screate_simple(1, dims, nullptr);
+  hid_t set = H5Dcreate2(group, name.c_str(), type, space, H5P_DEFAULT, H5P_DEFAULT, H5P_DEFAULT);
+  check(set, "create checkpoint " + name);
+  if (size > 0)
+    check(H5Dwrite(set, type, H5S_ALL, H5S_ALL, H5P_DEFAULT, data), "write checkpoint " + name);
+  H5Dclose(set);
+  H5Sclose(space);
+}
+
 }  // namespace
 
 RunFileWriter::RunFileWriter(const std::string& path, const RunHeader& header)
@@ -81,6 +177,12 @@ RunFileWriter::RunFileWriter(const std::string& path, const RunHeader& header)
   if (!parent.empty()) std::filesystem::create_directories(parent, ec);
   file_ = H5Fcreate(path.c_str(), H5F_ACC_TRUNC, H5P_DEFAULT, H5P_DEFAULT);
   if (file_ < 0) throw OutputError("cannot create output file '" + path + "'");
+  write_header(header);
+  H5Gclose(ensure_group("/frames"));
+  flush();
+}
+
+void RunFileWriter::write_header(const RunHeader& header) {
   write_string_attribute(file_, "washout_version", WASHOUT_VERSION);
   write_string_attribute(file_, "scene_name", header.scene_name);
   write_string_dataset(file_, "scene_source", header.scene_source);
@@ -88,11 +190,63 @@ RunFileWriter::RunFileWriter(const std::string& path, const RunHeader& header)
     write_string_attribute(file_, "scene_source", header.scene_source);
   write_string_attribute(file_, "parameters", header.parameters_json);
   const std::int32_t dim = header.dim;
-  write_attribute(file_, "dim", H5T_NATIVE_INT32, &dim);
-  write_attribute(file_, "d0", H5T_NATIVE_DOUBLE, &header.d0);
-  write_attribute(file_, "h", H5T_NATIVE_DOUBLE, &header.h);
-  write_attribute(file_, "dt", H5T_NATIVE_DOUBLE, &header.dt);
-  H5Gclose(ensure_group("/frames"));
+  replace_attribute(file_, "dim", H5T_NATIVE_INT32, &dim);
+  replace_attribute(file_, "d0", H5T_NATIVE_DOUBLE, &header.d0);
+  replace_attribute(file_, "h", H5T_NATIVE_DOUBLE, &header.h);
+  replace_attribute(file_, "dt", H5T_NATIVE_DOUBLE, &header.dt);
+}
+
+RunFileWriter::RunFileWriter(const std::string& path, const RunHeader& header,
+                             const ResumePoint& resume)
+    : path_(path), dim_(header.dim) {
+  H5Eset_auto2(H5E_DEFAULT, nullptr, nullptr);
+  file_ = H5Fopen(path.c_str(), H5F_ACC_RDWR, H5P_DEFAULT);
+  if (file_ < 0) throw OutputError("cannot open '" + path + "' to continue it");
+  // What a finished run added to the root goes: the continued run writes its own at its end.
+  // The scene and its parameters were checked against the checkpoint's run before: only the
+  // parameters that may change on a restart (end_time, threads, max_particles) are new.
+  for (const auto& name : attribute_names(file_))
+    if (!is_header_attribute(name)) H5Adelete(file_, name.c_str());
+  write_string_attribute(file_, "washout_version", WASHOUT_VERSION);
+  write_string_attribute(file_, "parameters", header.parameters_json);
+  // Frames after the resume point: a frame written after the last complete checkpoint.
+  hid_t frames = H5Gopen2(file_, "/frames", H5P_DEFAULT);
+  if (frames < 0) throw OutputError(path + ": no /frames group to continue");
+  for (const auto& name : child_names(frames)) {
+    char* end = nullptr;
+    const unsigned long index = std::strtoul(name.c_str(), &end, 10);
+    if (*end != '\0' || index >= resume.frames) {
+      check(H5Ldelete(frames, name.c_str(), H5P_DEFAULT), "delete frame " + name);
+      continue;
+    }
+    hid_t group = H5Gopen2(frames, name.c_str(), H5P_DEFAULT);
+    check(group, "open frame " + name);
+    FrameRecord record{name, 0.0, 0, H5Lexists(group, "velocity", H5P_DEFAULT) > 0,
+                       H5Lexists(group, "pressure", H5P_DEFAULT) > 0};
+    hid_t attr = H5Aopen(group, "time", H5P_DEFAULT);
+    check(attr, "read the time of frame " + name);
+    H5Aread(attr, H5T_NATIVE_DOUBLE, &record.time);
+    H5Aclose(attr);
+    hid_t set = H5Dopen2(group, "position", H5P_DEFAULT);
+    check(set, "open the positions of frame " + name);
+    hid_t space = H5Dget_space(set);
+    hsize_t dims[2] = {0, 0};
+    H5Sget_simple_extent_dims(space, dims, nullptr);
+    record.count = dims[0];
+    H5Sclose(space);
+    H5Dclose(set);
+    H5Gclose(group);
+    frames_.push_back(record);
+  }
+  H5Gclose(frames);
+  if (frames_.size() != resume.frames)
+    throw OutputError(path + " holds " + std::to_string(frames_.size()) +
+                      " whole frames before the checkpoint, expected " +
+                      std::to_string(resume.frames));
+  // Per-step series: the rows after the checkpoint's step go.
+  for (const char* root : {"/stats", "/probes", "/bodies"})
+    if (H5Lexists(file_, root, H5P_DEFAULT) > 0) cut_series(file_, root, resume.series_rows);
+  write_xdmf();
   flush();
 }
 
@@ -234,6 +388,39 @@ void RunFileWriter::set_string_attribute(const std::string& object, const std::s
   hid_t group = ensure_group(object);
   write_string_attribute(group, name, value);
   H5Gclose(group);
+}
+
+void RunFileWriter::write_checkpoint(const Checkpoint& c) {
+  const std::string slot = c.frame % 2 == 0 ? "/checkpoint/a" : "/checkpoint/b";
+  hid_t group = ensure_group(slot);
+  const std::int32_t incomplete = 0, complete = 1;
+  replace_attribute(group, "complete", H5T_NATIVE_INT32, &incomplete);
+  flush();
+  std::vector<std::string> keep;
+  for (const auto& [name, v] : c.reals) {
+    write_state_array(group, name, H5T_NATIVE_DOUBLE, v.data(), v.size());
+    keep.push_back(name);
+  }
+  for (const auto& [name, v] : c.integers) {
+    write_state_array(group, name, H5T_NATIVE_INT64, v.data(), v.size());
+    keep.push_back(name);
+  }
+  for (const auto& [name, v] : c.bytes) {
+    write_state_array(group, name, H5T_NATIVE_UINT8, v.data(), v.size());
+    keep.push_back(name);
+  }
+  for (const auto& name : child_names(group))
+    if (std::find(keep.begin(), keep.end(), name) == keep.end())
+      H5Ldelete(group, name.c_str(), H5P_DEFAULT);
+  for (const auto& name : attribute_names(group))
+    if (name != "complete") H5Adelete(group, name.c_str());
+  for (const auto& [name, v] : c.numbers) write_attribute(group, name, H5T_NATIVE_DOUBLE, &v);
+  for (const auto& [name, v] : c.counts) write_attribute(group, name, H5T_NATIVE_INT64, &v);
+  write_attribute(group, "frame", H5T_NATIVE_INT64, &c.frame);
+  write_attribute(group, "format", H5T_NATIVE_INT64, &Checkpoint::kFormat);
+  replace_attribute(group, "complete", H5T_NATIVE_INT32, &complete);
+  H5Gclose(group);
+  flush();
 }
 
 void RunFileWriter::flush() {

@@ -10,6 +10,7 @@
 #include <vector>
 
 #include "engine/core/particle_view.hpp"
+#include "engine/io/checkpoint.hpp"
 
 namespace washout::io {
 
@@ -26,9 +27,22 @@ struct RunHeader {
   double d0 = 0.0, h = 0.0, dt = 0.0;  // dt: the fixed step, or 0 when adaptive
 };
 
+// Where a restarted run continues an existing file: after frame `frames - 1`, with `series_rows`
+// rows in every per-step series (/stats, /probes, /bodies).
+struct ResumePoint {
+  std::size_t frames = 0;
+  std::size_t series_rows = 0;
+};
+
 class RunFileWriter {
  public:
+  // A new file (an existing one at `path` is replaced).
   RunFileWriter(const std::string& path, const RunHeader& header);
+  // An existing run file continued (`washout run --restart`): frames after the resume point are
+  // deleted, every per-step series is cut to resume.series_rows rows, the root attributes a
+  // finished run adds (wall_seconds, scores, ...) are removed and `parameters` is replaced by
+  // header.parameters_json. Frame numbering continues.
+  RunFileWriter(const std::string& path, const RunHeader& header, const ResumePoint& resume);
   ~RunFileWriter();
   RunFileWriter(const RunFileWriter&) = delete;
   RunFileWriter& operator=(const RunFileWriter&) = delete;
@@ -47,6 +61,11 @@ class RunFileWriter {
               std::size_t columns = 1);
   void set_string_attribute(const std::string& object, const std::string& name,
                             const std::string& value);
+  // Writes the state of frame checkpoint.frame into /checkpoint/a (even frames) or
+  // /checkpoint/b (odd), overwriting what that slot held two frames before. The slot is marked
+  // incomplete (and flushed) before its data change and complete after: a run killed while
+  // writing one slot leaves the other, the previous frame's, whole.
+  void write_checkpoint(const Checkpoint& checkpoint);
   void flush();
 
  private:
@@ -58,6 +77,7 @@ class RunFileWriter {
   };
   long long ensure_group(const std::string& path);
   void write_xdmf() const;
+  void write_header(const RunHeader& header);  // a new file's root attributes
 
   std::string path_;
   long long file_ = -1;

@@ -18,6 +18,12 @@ class RotationAngleTracker {
   explicit RotationAngleTracker(const Vec3& axis = Vec3::UnitZ()) : axis_(axis.normalized()) {}
   double update(const Eigen::Quaterniond& q);
   double angle() const { return angle_; }
+  double last_twist() const { return last_twist_; }
+  // Continues a tracker saved with angle() and last_twist() (a restarted run).
+  void restore(double angle, double last_twist) {
+    angle_ = angle;
+    last_twist_ = last_twist;
+  }
   const Vec3& axis() const { return axis_; }
 
  private:

@@ -37,6 +37,11 @@ class ImplicitBodyCoupling {
                         Particles& p, FluidWork& work, LinearSolver& solver,
                         RigidBodySystem& bodies, const Vec3& gravity, double dt);
 
+  // The last step's response fields S_k per fluid particle: the warm start of the next solves,
+  // part of a run's state (a checkpoint saves and restores them).
+  const std::vector<std::vector<double>>& warm_start() const { return previous_; }
+  void set_warm_start(std::vector<std::vector<double>> fields) { previous_ = std::move(fields); }
+
  private:
   std::vector<std::vector<double>> response_, solution_;
   std::vector<std::vector<double>> previous_;  // S_k per fluid particle, the next warm start

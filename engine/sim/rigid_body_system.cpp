@@ -6,6 +6,7 @@
 #include <stdexcept>
 
 #include "engine/contact/shape_wall.hpp"
+#include "engine/io/checkpoint.hpp"
 #include "engine/io/run_file_writer.hpp"
 #include "engine/rigid/hydrodynamic_load.hpp"
 #include "engine/sim/body_surface_pressure.hpp"
@@ -288,6 +289,120 @@ void RigidBodySystem::flush(io::RunFileWriter& writer) {
       v->clear();
   }
   attributes_written_ = true;
+}
+
+void RigidBodySystem::save_state(io::Checkpoint& c) const {
+  const std::size_t count = size();
+  auto vectors = [&](const char* name, auto&& of) {
+    std::vector<double>& out = c.reals[name];
+    out.clear();
+    for (std::size_t b = 0; b < count; ++b) {
+      const Vec3 v = of(b);
+      out.insert(out.end(), {v.x(), v.y(), v.z()});
+    }
+  };
+  vectors("body_position", [&](std::size_t b) { return states_[b].position; });
+  vectors("body_velocity", [&](std::size_t b) { return states_[b].velocity; });
+  vectors("body_angular_velocity", [&](std::size_t b) { return states_[b].angular_velocity; });
+  vectors("body_fluid_force", [&](std::size_t b) { return fluid_loads_[b].force; });
+  vectors("body_fluid_torque", [&](std::size_t b) { return fluid_loads_[b].torque; });
+  vectors("body_contact_force", [&](std::size_t b) { return contact_loads_[b].force; });
+  vectors("body_contact_torque", [&](std::size_t b) { return contact_loads_[b].torque; });
+  std::vector<double>& q = c.reals["body_orientation"];
+  std::vector<double>& angle = c.reals["body_angle"];
+  q.clear();
+  angle.clear();
+  for (std::size_t b = 0; b < count; ++b) {
+    const Eigen::Quaterniond& o = states_[b].orientation;
+    q.insert(q.end(), {o.w(), o.x(), o.y(), o.z()});
+    angle.insert(angle.end(), {angles_[b].angle(), angles_[b].last_twist()});
+  }
+  // Contact history: the tangential springs against walls and between bodies.
+  const contact::ContactWorkspace& ws = workspace_;
+  std::vector<double>&sx = c.reals["contact_wall_spring_x"], &sy = c.reals["contact_wall_spring_y"],
+  &sz = c.reals["contact_wall_spring_z"];
+  sx.clear(), sy.clear(), sz.clear();
+  for (const auto& spring : ws.wall_spring) {
+    sx.insert(sx.end(), spring.x.begin(), spring.x.end());
+    sy.insert(sy.end(), spring.y.begin(), spring.y.end());
+    sz.insert(sz.end(), spring.z.begin(), spring.z.end());
+  }
+  c.bytes["contact_wall_spring_used"] = ws.wall_spring_used;
+  std::vector<std::int64_t>& keys = c.integers["contact_pair_key"];
+  std::vector<double>& pair = c.reals["contact_pair_spring"];
+  keys.clear();
+  pair.clear();
+  for (const auto& s : ws.pair_spring) {
+    keys.insert(keys.end(), {s.body_a, s.particle_a, s.body_b, s.particle_b});
+    pair.insert(pair.end(), {s.spring.x(), s.spring.y(), s.spring.z()});
+  }
+  c.counts["contact_prepared"] = ws.body_count >= 0;
+}
+
+void RigidBodySystem::restore_state(const io::Checkpoint& c) {
+  const std::size_t count = size();
+  auto vectors = [&](const char* name, auto&& set) {
+    const std::vector<double>& v = c.real(name, 3 * count);
+    for (std::size_t b = 0; b < count; ++b) set(b, Vec3(v[3 * b], v[3 * b + 1], v[3 * b + 2]));
+  };
+  vectors("body_position", [&](std::size_t b, const Vec3& v) { states_[b].position = v; });
+  vectors("body_velocity", [&](std::size_t b, const Vec3& v) { states_[b].velocity = v; });
+  vectors("body_angular_velocity",
+          [&](std::size_t b, const Vec3& v) { states_[b].angular_velocity = v; });
+  vectors("body_fluid_force", [&](std::size_t b, const Vec3& v) { fluid_loads_[b].force = v; });
+  vectors("body_fluid_torque", [&](std::size_t b, const Vec3& v) { fluid_loads_[b].torque = v; });
+  vectors("body_contact_force", [&](std::size_t b, const Vec3& v) { contact_loads_[b].force = v; });
+  vectors("body_contact_torque",
+          [&](std::size_t b, const Vec3& v) { contact_loads_[b].torque = v; });
+  last_report_.contact_load = contact_loads_;
+  const std::vector<double>& q = c.real("body_orientation", 4 * count);
+  const std::vector<double>& angle = c.real("body_angle", 2 * count);
+  for (std::size_t b = 0; b < count; ++b) {
+    states_[b].orientation = Eigen::Quaterniond(q[4 * b], q[4 * b + 1], q[4 * b + 2], q[4 * b + 3]);
+    angles_[b].restore(angle[2 * b], angle[2 * b + 1]);
+  }
+  contact::ContactWorkspace& ws = workspace_;
+  if (c.count("contact_prepared") == 0) return;  // no step yet: no contact history
+  ws.prepare(models_, contact_);
+  std::size_t springs = 0;
+  for (const auto& spring : ws.wall_spring) springs += spring.size();
+  const std::vector<double>&sx = c.real("contact_wall_spring_x", springs),
+        &sy = c.real("contact_wall_spring_y", springs),
+        &sz = c.real("contact_wall_spring_z", springs);
+  std::size_t k = 0;
+  for (auto& spring : ws.wall_spring)
+    for (std::size_t i = 0; i < spring.size(); ++i, ++k) {
+      spring.x[i] = sx[k];
+      spring.y[i] = sy[k];
+      spring.z[i] = sz[k];
+    }
+  ws.wall_spring_used = c.byte("contact_wall_spring_used", ws.wall_spring_used.size());
+  const std::vector<std::int64_t>& keys = c.integer("contact_pair_key");
+  if (keys.size() % 4 != 0)
+    throw io::CheckpointError("the checkpoint's contact_pair_key is not a list of 4-tuples");
+  const std::vector<double>& pair = c.real("contact_pair_spring", keys.size() / 4 * 3);
+  ws.pair_spring.clear();
+  for (std::size_t s = 0; s < keys.size() / 4; ++s) {
+    contact::PairSpring spring;
+    spring.body_a = static_cast<std::int32_t>(keys[4 * s]);
+    spring.particle_a = static_cast<std::int32_t>(keys[4 * s + 1]);
+    spring.body_b = static_cast<std::int32_t>(keys[4 * s + 2]);
+    spring.particle_b = static_cast<std::int32_t>(keys[4 * s + 3]);
+    const bool valid =
+        spring.body_a >= 0 && spring.body_b >= 0 &&
+        static_cast<std::size_t>(spring.body_a) < count &&
+        static_cast<std::size_t>(spring.body_b) < count && spring.particle_a >= 0 &&
+        spring.particle_b >= 0 &&
+        static_cast<std::size_t>(spring.particle_a) <
+            models_[spring.body_a].contact_offset.size() &&
+        static_cast<std::size_t>(spring.particle_b) < models_[spring.body_b].contact_offset.size();
+    if (!valid)
+      throw io::CheckpointError(
+          "the checkpoint's contact springs name particles these bodies do "
+          "not have");
+    spring.spring = Vec3(pair[3 * s], pair[3 * s + 1], pair[3 * s + 2]);
+    ws.pair_spring.push_back(spring);
+  }
 }
 
 }  // namespace washout

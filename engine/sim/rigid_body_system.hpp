@@ -25,7 +25,8 @@ namespace washout {
 
 namespace io {
 class RunFileWriter;
-}
+struct Checkpoint;
+}  // namespace io
 
 class RigidBodySystem {
  public:
@@ -78,6 +79,13 @@ class RigidBodySystem {
   // One output row per body after each step; appended to /bodies/NAME at each frame.
   void record(double time);
   void flush(io::RunFileWriter& writer);
+
+  // What the next step reads of the bodies, for a checkpoint (entries named body_* and
+  // contact_*): states, the loads of the last step (its contact load enters the next coupling),
+  // the rotation trackers and the contact springs. restore_state throws io::CheckpointError
+  // when the checkpoint's bodies do not match these.
+  void save_state(io::Checkpoint& c) const;
+  void restore_state(const io::Checkpoint& c);
 
  private:
   void place_body(std::size_t b, Particles& p) const;

@@ -5,6 +5,7 @@
 #include <sstream>
 
 #include "engine/fluid/isph_stages.hpp"
+#include "engine/io/checkpoint.hpp"
 #include "engine/io/run_file_writer.hpp"
 #include "engine/sim/rigid_body_system.hpp"
 #include "engine/sim/simulation.hpp"
@@ -47,7 +48,8 @@ void Simulation::flush_series(io::RunFileWriter& writer) {
 }
 
 RunSummary Simulation::run(const std::string& output_path,
-                           const std::vector<RunObserver*>& observers) {
+                           const std::vector<RunObserver*>& observers,
+                           const io::Checkpoint* resume) {
   const auto& prm = model_.params;
   const auto start = std::chrono::steady_clock::now();
   RunSummary summary;
@@ -55,47 +57,69 @@ RunSummary Simulation::run(const std::string& output_path,
   summary.fluid_particles = particles_.fluid_count;
   summary.boundary_particles = particles_.size() - particles_.fluid_count;
 
+  std::size_t frame = 0;
+  double next_frame = prm.output_interval;
   std::unique_ptr<io::RunFileWriter> writer;
-  if (!output_path.empty()) {
-    io::RunHeader header{model_.scene_name,
-                         model_.scene_source,
-                         model_.parameter_set.to_json(),
-                         prm.dim,
-                         prm.d0,
-                         ctx_.h,
-                         prm.dt};
+  const io::RunHeader header{model_.scene_name,
+                             model_.scene_source,
+                             model_.parameter_set.to_json(),
+                             prm.dim,
+                             prm.d0,
+                             ctx_.h,
+                             prm.dt};
+  if (resume) {
+    // The state right after the checkpoint's frame was written, and the file cut back to it.
+    restore_state(*resume);
+    frame = static_cast<std::size_t>(resume->frame) + 1;
+    next_frame = resume->number("next_frame");
+    summary.last_frame_time = resume->number("last_frame_time");
+    if (!output_path.empty())
+      writer = std::make_unique<io::RunFileWriter>(
+          output_path, header, io::ResumePoint{frame, static_cast<std::size_t>(step_)});
+  } else if (!output_path.empty()) {
     writer = std::make_unique<io::RunFileWriter>(output_path, header);
   }
-  // The state at t = 0: densities and probes, then frame 0.
-  grid_.build(particles_, 2.0 * ctx_.h, ctx_.periodic);
-  grid_.build_list(particles_, particles_.fluid_count, 2.0 * ctx_.h, neighbors_);
-  compute_summation_density(ctx_, neighbors_, particles_);
-  if (!model_.probes.empty()) evaluate_probes();
-  std::size_t frame = 0;
+  // A frame, then the full state after it: a restart from this frame continues exactly here.
   auto emit_frame = [&]() {
     auto s = timer_.measure("output");
     if (writer) {
       flush_series(*writer);
       write_frame(*writer);
+      io::Checkpoint checkpoint;
+      checkpoint.frame = static_cast<std::int64_t>(frame);
+      save_state(checkpoint);
+      checkpoint.numbers["next_frame"] = next_frame;
+      checkpoint.numbers["last_frame_time"] = time_;
+      writer->write_checkpoint(checkpoint);
     }
     summary.last_frame_time = time_;
     ++frame;
   };
-  emit_frame();
+  if (!resume) {
+    // The state at t = 0: densities and probes, then frame 0.
+    grid_.build(particles_, 2.0 * ctx_.h, ctx_.periodic);
+    grid_.build_list(particles_, particles_.fluid_count, 2.0 * ctx_.h, neighbors_);
+    compute_summation_density(ctx_, neighbors_, particles_);
+    if (!model_.probes.empty()) evaluate_probes();
+    emit_frame();
+  }
   bool keep_going = true;
   for (auto* o : observers) o->on_start(*this);
-  for (auto* o : observers) keep_going = o->on_frame(*this, 0) && keep_going;
+  if (!resume)  // a restarted run's frame was seen by the run that wrote it
+    for (auto* o : observers) keep_going = o->on_frame(*this, 0) && keep_going;
   RunObserver* stopper = nullptr;
   if (!keep_going)
     for (auto* o : observers) stopper = o;
 
-  double next_frame = prm.output_interval;
   const double tolerance = 1e-9 * prm.output_interval;
   try {
     while (keep_going && time_ < prm.end_time - tolerance) {
       StepReport report;
       try {
-        report = step_until(std::min(next_frame, prm.end_time));
+        // An end_time within the tolerance of a frame time ends the run on that frame's time:
+        // a run continued to a later end_time (--restart) then takes the steps of one that
+        // never stopped.
+        report = step_until(next_frame <= prm.end_time + tolerance ? next_frame : prm.end_time);
       } catch (const UnstableError& e) {
         std::ostringstream m;
         m << "unstable at t = " << time_ << " s (step " << step_ + 1 << "): " << e.what() << ". ";
@@ -127,8 +151,9 @@ RunSummary Simulation::run(const std::string& output_path,
       }
       const bool at_frame = time_ >= next_frame - tolerance || time_ >= prm.end_time - tolerance;
       if (at_frame || !keep_going) {
-        emit_frame();
+        // The next frame time first: the frame's checkpoint holds it.
         while (next_frame <= time_ + tolerance) next_frame += prm.output_interval;
+        emit_frame();
         auto s = timer_.measure("callbacks");
         for (auto* o : observers)
           if (!o->on_frame(*this, frame - 1)) keep_going = false, stopper = o;

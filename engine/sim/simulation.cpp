@@ -132,6 +132,7 @@ Simulation::Simulation(Model model)
   features.moving_walls = !moving_walls_.empty();
   features.probes = !model_.probes.empty();
   plan_ = compose_step(features);
+  layout_fingerprint_ = compute_layout_fingerprint();
 }
 
 Simulation::~Simulation() = default;

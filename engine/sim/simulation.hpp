@@ -3,6 +3,7 @@
 // The step is composed from what the scene uses (no turbulence stage without turbulence, no
 // moving-wall update without moving walls); each stage's time is measured.
 #include <array>
+#include <cstdint>
 #include <memory>
 #include <stdexcept>
 #include <string>
@@ -24,7 +25,8 @@ namespace washout {
 
 namespace io {
 class RunFileWriter;
-}
+struct Checkpoint;
+}  // namespace io
 class RigidBodySystem;
 
 struct StepReport {
@@ -99,8 +101,21 @@ class Simulation {
   StepReport step();
   // One step whose size is trimmed so that the run lands exactly on time `until` (a frame).
   StepReport step_until(double until);
-  // Steps to end_time, writing frames to output_path (empty: no file).
-  RunSummary run(const std::string& output_path, const std::vector<RunObserver*>& observers);
+  // Steps to end_time, writing frames to output_path (empty: no file), each with a checkpoint.
+  // With `resume` (a checkpoint read from output_path), continues that run in that file from
+  // the checkpoint's frame instead of starting at t = 0 (washout run --restart).
+  RunSummary run(const std::string& output_path, const std::vector<RunObserver*>& observers,
+                 const io::Checkpoint* resume = nullptr);
+
+  // Everything the next step reads that is not rebuilt from the scene, at full precision
+  // (simulation_state.cpp): particles, time-step state, wall motion, solver warm starts, bodies
+  // and contact history. restore_state puts a saved state back into a Simulation built from the
+  // same scene and parameters; it throws io::CheckpointError when the state does not fit.
+  void save_state(io::Checkpoint& c) const;
+  void restore_state(const io::Checkpoint& c);
+  // A hash of the particle layout at t = 0 (kinds, groups, positions, normals, wall distances):
+  // a checkpoint from a scene that builds other particles is refused.
+  std::uint64_t layout_fingerprint() const { return layout_fingerprint_; }
 
   // The wall pressures (virtual markers) for the current state, for output and loads.
   void update_boundary_pressures();
@@ -126,6 +141,7 @@ class Simulation {
   void evaluate_probes();
   void write_frame(io::RunFileWriter& writer);
   void flush_series(io::RunFileWriter& writer);
+  std::uint64_t compute_layout_fingerprint() const;
 
   Model model_;
   Particles particles_;
@@ -150,6 +166,7 @@ class Simulation {
   bool ghost_surface_ = true, symmetric_gradient_ = true;
   double time_ = 0.0;
   long step_ = 0;
+  std::uint64_t layout_fingerprint_ = 0;
   double max_speed_ = 0.0;
   double max_speed_limit_ = 0.0;
   Vec3 domain_lower_, domain_upper_;

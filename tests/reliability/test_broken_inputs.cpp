@@ -8,6 +8,7 @@
 #include <cstdint>
 #include <filesystem>
 #include <fstream>
+#include <functional>
 #include <map>
 
 #include "reliability/run_washout.hpp"
@@ -107,6 +108,64 @@ void generate_run_files(const fs::path& dir) {
   for (const auto& [name, spec] : files) write_run_file(dir / name, spec);
 }
 
+// A real run of base.lua for the --restart cases ($G/restart_source.h5), and copies of it
+// spoilt by hand: no checkpoint, no complete one, another format, another particle layout, a
+// series shorter than the checkpoint's steps.
+void for_each_slot(hid_t f, const std::function<void(hid_t)>& edit) {
+  for (const char* slot : {"/checkpoint/a", "/checkpoint/b"})
+    if (H5Lexists(f, "/checkpoint", H5P_DEFAULT) > 0 && H5Lexists(f, slot, H5P_DEFAULT) > 0) {
+      hid_t g = H5Gopen2(f, slot, H5P_DEFAULT);
+      edit(g);
+      H5Gclose(g);
+    }
+}
+
+void set_integer(hid_t object, const char* name, std::int64_t value) {
+  if (H5Aexists(object, name) > 0) H5Adelete(object, name);
+  hid_t space = H5Screate(H5S_SCALAR);
+  hid_t a = H5Acreate2(object, name, H5T_NATIVE_INT64, space, H5P_DEFAULT, H5P_DEFAULT);
+  H5Awrite(a, H5T_NATIVE_INT64, &value);
+  H5Aclose(a);
+  H5Sclose(space);
+}
+
+void generate_restart_files(const fs::path& dir) {
+  const fs::path run = dir / "restart_run";
+  const auto r = test::run_washout(
+      {"run", (kCorpus / "base.lua").string(), "--out", run.string(), "--quiet", "--threads", "1"},
+      (dir / "restart_run.log").string(), 60);
+  ASSERT_EQ(r.status, 0) << r.output;
+  fs::copy_file(run / "base.h5", dir / "restart_source.h5", fs::copy_options::overwrite_existing);
+  const std::map<std::string, std::function<void(hid_t)>> edits = {
+      {"no_checkpoint.h5", [](hid_t f) { H5Ldelete(f, "/checkpoint", H5P_DEFAULT); }},
+      {"checkpoint_incomplete.h5",
+       [](hid_t f) {
+         for_each_slot(f, [](hid_t g) {
+           H5Adelete(g, "complete");
+           set_integer(g, "complete", 0);
+         });
+       }},
+      {"checkpoint_format.h5",
+       [](hid_t f) { for_each_slot(f, [](hid_t g) { set_integer(g, "format", 99); }); }},
+      {"layout_changed.h5",
+       [](hid_t f) { for_each_slot(f, [](hid_t g) { set_integer(g, "layout", 12345); }); }},
+      {"series_short.h5",
+       [](hid_t f) {
+         hid_t d = H5Dopen2(f, "/stats/time", H5P_DEFAULT);
+         hsize_t rows[1] = {1};
+         H5Dset_extent(d, rows);
+         H5Dclose(d);
+       }},
+  };
+  for (const auto& [name, edit] : edits) {
+    fs::copy_file(run / "base.h5", dir / name, fs::copy_options::overwrite_existing);
+    hid_t f = H5Fopen((dir / name).c_str(), H5F_ACC_RDWR, H5P_DEFAULT);
+    ASSERT_GE(f, 0) << name;
+    edit(f);
+    H5Fclose(f);
+  }
+}
+
 std::string substitute(std::string text, const std::string& key, const std::string& value) {
   for (auto at = text.find(key); at != std::string::npos; at = text.find(key, at + value.size()))
     text.replace(at, key.size(), value);
@@ -122,6 +181,7 @@ TEST(BrokenInputs, EveryCaseRefusedWithItsStatusAndMessage) {
   const fs::path work = fs::path(WASHOUT_TEST_OUTPUT_DIR) / "broken_inputs";
   fs::remove_all(work);
   generate_run_files(work / "generated");
+  generate_restart_files(work / "generated");
   std::ifstream manifest(kCorpus / "manifest.txt");
   ASSERT_TRUE(manifest) << "no manifest in " << kCorpus;
   int cases = 0, line_number = 0;

@@ -1,0 +1,228 @@
+// Checkpoint and restart (issue 16, docs/reliability.md "Restart"): a run continued with
+// `washout run SCENE --restart RUN.h5` is, bit for bit, the run that never stopped (at the same
+// thread count): every frame (time, step, position, velocity, pressure, kind, id, body), every
+// per-step series (/stats but wall_seconds, /probes, /bodies) and the body CSVs. Three ways to
+// stop: a run that ended at an earlier end_time, SIGKILL, SIGTERM (which adds a frame of its
+// own at the moment it stopped).
+#include <gtest/gtest.h>
+
+#include <cstring>
+#include <filesystem>
+#include <fstream>
+#include <map>
+#include <sstream>
+
+#include "engine/io/run_file_reader.hpp"
+#include "reliability/run_washout.hpp"
+
+namespace washout {
+namespace {
+
+namespace fs = std::filesystem;
+const std::string kScenes = std::string(WASHOUT_SOURCE_DIR) + "/scenes/";
+
+std::string read_text(const fs::path& path) {
+  std::ifstream in(path, std::ios::binary);
+  std::stringstream text;
+  text << in.rdbuf();
+  return text.str();
+}
+
+template <class T>
+bool same_bits(const std::vector<T>& a, const std::vector<T>& b) {
+  return a.size() == b.size() &&
+         (a.empty() || std::memcmp(a.data(), b.data(), a.size() * sizeof(T)) == 0);
+}
+
+struct Comparison {
+  int frames = 0;        // frames of the uninterrupted run found, identical, in the other
+  int frames_after = 0;  // of those, after `restart_time`
+  int series = 0;        // per-step datasets compared
+  std::size_t series_rows = 0;
+};
+
+// Every frame and per-step series of `reference` must be in `restarted`, bit for bit (a frame
+// matched by its time: a run stopped by SIGTERM has one frame more, at the moment it stopped).
+Comparison expect_same_run(const fs::path& reference, const fs::path& restarted,
+                           double restart_time) {
+  Comparison c;
+  io::RunFileReader a(reference.string()), b(restarted.string());
+  const auto times_a = a.frame_times(), times_b = b.frame_times();
+  std::map<double, std::size_t> frame_of;
+  for (std::size_t k = 0; k < times_b.size(); ++k) frame_of[times_b[k]] = k;
+  EXPECT_GE(times_b.size(), times_a.size());
+  for (std::size_t k = 0; k < times_a.size(); ++k) {
+    const auto it = frame_of.find(times_a[k]);
+    if (it == frame_of.end()) {
+      ADD_FAILURE() << restarted << " has no frame at t = " << times_a[k];
+      continue;
+    }
+    const io::FrameData x = a.read_frame(k), y = b.read_frame(it->second);
+    const bool same = x.step == y.step && same_bits(x.position, y.position) &&
+                      same_bits(x.velocity, y.velocity) && same_bits(x.pressure, y.pressure) &&
+                      same_bits(x.kind, y.kind) && same_bits(x.id, y.id) &&
+                      same_bits(x.body, y.body);
+    EXPECT_TRUE(same) << "frame " << k << " (t = " << times_a[k] << " s) differs";
+    c.frames += same;
+    c.frames_after += same && times_a[k] > restart_time + 1e-9;
+  }
+  std::vector<std::string> datasets;
+  for (const auto& name : a.children("/stats"))
+    if (name != "wall_seconds") datasets.push_back("/stats/" + name);
+  for (const std::string group : {"/probes", "/bodies"})
+    for (const auto& member : a.children(group))
+      for (const auto& name : a.children(group + "/" + member))
+        datasets.push_back(group + "/" + member + "/" + name);
+  for (const auto& d : datasets) {
+    if (!b.has(d)) {
+      ADD_FAILURE() << restarted << " lacks " << d;
+      continue;
+    }
+    const auto x = a.read_doubles(d), y = b.read_doubles(d);
+    EXPECT_TRUE(same_bits(x, y)) << d << " differs (" << x.size() << " and " << y.size()
+                                 << " values)";
+    ++c.series;
+    c.series_rows = std::max(c.series_rows, a.shape(d)[0]);
+  }
+  // A finished run's summary is written again at the end of the continued one.
+  EXPECT_TRUE(b.has_attribute("/", "wall_seconds"));
+  return c;
+}
+
+std::vector<std::string> with(std::vector<std::string> args, const std::vector<std::string>& more) {
+  args.insert(args.end(), more.begin(), more.end());
+  return args;
+}
+
+// The frame a restart continued from, from its first line.
+int continued_from(const std::string& output) {
+  const auto at = output.find(" from frame ");
+  return at == std::string::npos ? -1 : std::atoi(output.c_str() + at + 12);
+}
+
+TEST(Restart, DamBreakContinuedToALaterEndTimeIsTheUninterruptedRun) {
+  const fs::path work = fs::path(WASHOUT_TEST_OUTPUT_DIR) / "restart_dambreak";
+  fs::remove_all(work);
+  const std::vector<std::string> run = {
+      "run", kScenes + "dambreak_2d.lua", "--set", "d0=0.0146", "--threads", "1", "--quiet"};
+  const auto full = test::run_washout(with(run, {"--out", (work / "full").string()}),
+                                      (work / "full.log").string(), 120);
+  ASSERT_EQ(full.status, 0) << full.output;
+  // The first half, stopped at its own end_time, then continued to the scene's 0.3 s.
+  const auto half =
+      test::run_washout(with(run, {"--out", (work / "part").string(), "--set", "end_time=0.15"}),
+                        (work / "half.log").string(), 120);
+  ASSERT_EQ(half.status, 0) << half.output;
+  const fs::path file = work / "part" / "dambreak_2d.h5";
+  const auto rest =
+      test::run_washout(with(run, {"--restart", file.string()}), (work / "rest.log").string(), 120);
+  ASSERT_EQ(rest.status, 0) << rest.output;
+  EXPECT_EQ(continued_from(rest.output), 30) << rest.output;
+  const Comparison c = expect_same_run(work / "full" / "dambreak_2d.h5", file, 0.15);
+  EXPECT_EQ(c.frames, 61);
+  EXPECT_EQ(c.frames_after, 30);
+  EXPECT_EQ(c.series, 13);  // 9 /stats series (not wall_seconds), 2 probes x (time, value)
+  // The rendered frames go on with the same numbers (every 4th frame) and the same pixels.
+  int pngs = 0;
+  for (const auto& entry : fs::directory_iterator(work / "full" / "frames")) {
+    const fs::path other = work / "part" / "frames" / entry.path().filename();
+    ASSERT_TRUE(fs::exists(other)) << other;
+    EXPECT_EQ(read_text(entry.path()), read_text(other)) << other;
+    ++pngs;
+  }
+  EXPECT_EQ(pngs, 16);
+  // Continuing a finished run again does nothing and says so.
+  const auto again = test::run_washout(with(run, {"--restart", file.string()}),
+                                       (work / "again.log").string(), 120);
+  EXPECT_EQ(again.status, 0) << again.output;
+  EXPECT_NE(again.output.find("already reached end_time"), std::string::npos) << again.output;
+  EXPECT_EQ(io::RunFileReader(file.string()).frame_count(), 61u);
+  std::printf(
+      "dam break: %d frames (%d after the restart at t = 0.15 s) and %d series of %zu "
+      "rows bitwise equal\n",
+      c.frames, c.frames_after, c.series, c.series_rows);
+}
+
+// The sinking box at rest on the floor: contact springs with friction, the body's velocity
+// solved with the pressure (implicit coupling, PCG warm-started from the last step's response
+// fields), particle shifting.
+const std::vector<std::string> kBoxRun = {"run",       kScenes + "sinking_box_2d.lua",
+                                          "--set",     "d0=0.01",
+                                          "--set",     "drop=0.01",
+                                          "--set",     "output_interval=0.02",
+                                          "--set",     "end_time=0.3",
+                                          "--set",     "solver=pcg",
+                                          "--threads", "1",
+                                          "--quiet"};
+
+// The uninterrupted box run (each test makes its own: ctest runs them side by side).
+fs::path box_reference(const std::string& name) {
+  const fs::path dir = fs::path(WASHOUT_TEST_OUTPUT_DIR) / name;
+  fs::remove_all(dir);
+  const auto r =
+      test::run_washout(with(kBoxRun, {"--out", dir.string()}), (dir.string() + ".log"), 120);
+  EXPECT_EQ(r.status, 0) << r.output;
+  return dir;
+}
+
+// Starts the box run into `dir`, waits for frame 3 in its log and sends `sig`.
+test::ProgramResult stop_box_run(const fs::path& dir, int sig) {
+  fs::remove_all(dir);
+  fs::create_directories(dir);
+  const std::string log = (dir / "first.log").string();
+  const pid_t pid = test::start_washout(with(kBoxRun, {"--out", dir.string()}), log);
+  const auto start = std::chrono::steady_clock::now();
+  while (std::chrono::steady_clock::now() - start < std::chrono::seconds(60) &&
+         read_text(log).find("frame    3 ") == std::string::npos)
+    std::this_thread::sleep_for(std::chrono::milliseconds(5));
+  kill(pid, sig);
+  return test::wait_washout(pid, log, 120);
+}
+
+TEST(Restart, BodyInContactKilledAndRestartedIsTheUninterruptedRun) {
+  const fs::path reference = box_reference("restart_box_killed_reference");
+  const fs::path dir = fs::path(WASHOUT_TEST_OUTPUT_DIR) / "restart_box_killed";
+  const auto first = stop_box_run(dir, SIGKILL);
+  ASSERT_EQ(first.signal, SIGKILL) << "the run ended before it was killed:\n" << first.output;
+  const fs::path file = dir / "sinking_box_2d.h5";
+  const auto rest = test::run_washout(with(kBoxRun, {"--restart", file.string()}),
+                                      (dir / "rest.log").string(), 120);
+  ASSERT_EQ(rest.status, 0) << rest.output;
+  const int from = continued_from(rest.output);
+  EXPECT_GE(from, 3) << rest.output;
+  EXPECT_LT(from, 15) << rest.output;
+  const double restart_time = 0.02 * from;
+  const Comparison c = expect_same_run(reference / "sinking_box_2d.h5", file, restart_time);
+  EXPECT_EQ(c.frames, 16);
+  EXPECT_EQ(c.frames_after, 15 - from);
+  EXPECT_EQ(c.series_rows, 300u);
+  EXPECT_EQ(read_text(reference / "box.csv"), read_text(dir / "box.csv"));
+  std::printf(
+      "box killed by SIGKILL, continued from frame %d: %d frames (%d after it) and %d "
+      "series of %zu rows bitwise equal, box.csv equal\n",
+      from, c.frames, c.frames_after, c.series, c.series_rows);
+}
+
+TEST(Restart, BodyInContactStoppedBySigtermAndRestartedIsTheUninterruptedRun) {
+  const fs::path reference = box_reference("restart_box_sigterm_reference");
+  const fs::path dir = fs::path(WASHOUT_TEST_OUTPUT_DIR) / "restart_box_sigterm";
+  const auto first = stop_box_run(dir, SIGTERM);
+  ASSERT_EQ(first.status, 4) << first.output;
+  const fs::path file = dir / "sinking_box_2d.h5";
+  const auto rest = test::run_washout(with(kBoxRun, {"--restart", file.string()}),
+                                      (dir / "rest.log").string(), 120);
+  ASSERT_EQ(rest.status, 0) << rest.output;
+  const int from = continued_from(rest.output);
+  EXPECT_GE(from, 3) << rest.output;
+  const Comparison c = expect_same_run(reference / "sinking_box_2d.h5", file, 0.02 * from);
+  EXPECT_EQ(c.frames, 16);
+  EXPECT_EQ(c.series_rows, 300u);
+  EXPECT_EQ(read_text(reference / "box.csv"), read_text(dir / "box.csv"));
+  std::printf(
+      "box stopped by SIGTERM, continued from frame %d: %d frames and %d series bitwise "
+      "equal\n",
+      from, c.frames, c.series);
+}
+
+}  // namespace
+}  // namespace washout
