@@ -51,6 +51,10 @@ function flume.defaults()
     girder_height = 0.06,      -- [assumption] girder depth, m (width / depth = 4, a usual deck)
     girder_density = 1161,     -- [paper] PLA, kg/m^3 (3D: span = flume_width, wall to wall)
     gate_lift = 0.70,          -- [assumption] the gate stops once lifted this far, m (clear of the walls)
+    gate_speed = 0,            -- [assumption] 0: the gate is lifted at free fall (g t^2 / 2); > 0:
+                               -- at this constant speed, m/s (100: opened almost at once)
+    girder_young_modulus = 5.0e9,  -- [paper] PLA's E, Pa (the stability suite sweeps it)
+    girder_restitution = 0.8,      -- [paper] PLA's eps (the stability suite sweeps it)
     window_length = 2.10,      -- [assumption] observation window: the run stops when the girder's
                                -- centre is this far downstream of the pier's upstream face, m
   }
@@ -58,8 +62,9 @@ end
 
 -- Contact, [paper]: E = 5.0e9 Pa, nu = 0.28, eps = 0.8 for the PLA girder; friction girder-pier
 -- 0.05, girder-wall 0.0. The paper gives one (E, nu, eps); we give the pier and the flume's walls
--- the same values [assumption] and name them apart so that each pair has its friction.
-flume.girder_material = { name = "pla", E = 5.0e9, nu = 0.28, eps = 0.8 }
+-- the same values [assumption] and name them apart so that each pair has its friction. The
+-- girder's E and eps are the scene parameters girder_young_modulus and girder_restitution.
+flume.girder_material = { name = "pla", nu = 0.28 }
 flume.pier_material = { name = "pier", E = 5.0e9, nu = 0.28, eps = 0.8 }
 flume.wall_material = { name = "glass", E = 5.0e9, nu = 0.28, eps = 0.8 }
 flume.mu_girder_pier = 0.05  -- [paper]
@@ -86,8 +91,13 @@ end
 function flume.check(P)
   for _, name in ipairs { "water_height", "reservoir_length", "flume_length", "wall_height",
                           "pier_distance", "pier_length", "pier_height", "girder_width",
-                          "girder_height", "girder_density", "gate_lift", "window_length" } do
+                          "girder_height", "girder_density", "gate_lift", "window_length",
+                          "girder_young_modulus", "girder_restitution" } do
     positive(P, name)
+  end
+  if type(P.gate_speed) ~= "number" or not (P.gate_speed >= 0) then
+    error(("flume: gate_speed = %s must be a number >= 0 (0: free fall)"):format(
+      tostring(P.gate_speed)), 0)
   end
   if P.dim == 3 then
     positive(P, "flume_width")
@@ -165,7 +175,8 @@ function flume.build(P)
     for _, c in ipairs(P.gravity) do g = g + c * c end
     g = math.sqrt(g)
   end
-  local pla = washout.material(flume.girder_material)
+  local pla = washout.material { name = flume.girder_material.name, E = P.girder_young_modulus,
+                                 nu = flume.girder_material.nu, eps = P.girder_restitution }
   local pier_mat = washout.material(flume.pier_material)
   local glass = washout.material(flume.wall_material)
   washout.friction { pla, pier_mat, flume.mu_girder_pier }
@@ -181,7 +192,11 @@ function flume.build(P)
   local gz0, gz1 = P.pier_height, P.pier_height + P.girder_height
   -- Free fall: z(t) = g t^2 / 2 until the gate is out of the flume, then it stays there (a gate
   -- climbing for ever would take the neighbour grid with it).
-  local function lift(t) return math.min(0.5 * g * t * t, P.gate_lift) end
+  -- A gate_speed > 0 lifts it at that constant speed instead.
+  local function lift(t)
+    if P.gate_speed > 0 then return math.min(P.gate_speed * t, P.gate_lift) end
+    return math.min(0.5 * g * t * t, P.gate_lift)
+  end
 
   local out = { gate_x = x_gate, pier_x0 = px0, pier_x1 = px1, pier_top = gz0,
                 window_x = px0 + P.window_length }

@@ -41,9 +41,11 @@ void ProgressDisplay::print_line(const Simulation& sim, const StepReport& r, boo
   const double end = sim.params().end_time;
   const double eta = sim.time() > 0 ? elapsed * (end - sim.time()) / sim.time() : NAN;
   std::fprintf(
-      out_, "%st = %.4f / %.4f s  step %ld  dt %.2e s  PPE %d it (res %.1e)  wall %s  ETA %s%s",
-      newline ? "" : "\r", sim.time(), end, sim.step_count(), r.dt, r.ppe_iterations,
-      r.ppe_residual, clock_text(elapsed).c_str(), clock_text(eta).c_str(), newline ? "\n" : "   ");
+      out_,
+      "%st = %.4f / %.4f s  step %ld  dt %.2e s (%s)  PPE %d it (res %.1e)  wall %s  ETA %s%s",
+      newline ? "" : "\r", sim.time(), end, sim.step_count(), r.dt, step_limit_name(r.dt_limit),
+      r.ppe_iterations, r.ppe_residual, clock_text(elapsed).c_str(), clock_text(eta).c_str(),
+      newline ? "\n" : "   ");
   std::fflush(out_);
 }
 

@@ -116,6 +116,11 @@ const std::vector<ParameterInfo>& ParameterSet::engine_table() {
       {"periodic", "-", "periodic axes, e.g. \"x\" (needs domain_min and domain_max)",
        std::string("")},
       {"domain_min", "m",
+      {"energy_gain_limit", "-",
+       "the energy guard: a run whose mechanical energy (fluid and bodies, kinetic + potential) "
+       "exceeds its start plus the work moving walls and bodies can have done plus this "
+       "fraction of M_fluid g H stops as unstable (docs/stability.md); 0 = off",
+       0.1},
        "lower corner of the domain; particles leaving it stop the run; "
        "empty = bounding box of the scene plus a margin",
        Vec{}},
@@ -353,6 +358,7 @@ SimulationParameters SimulationParameters::from(const ParameterSet& set) {
   p.periodic = set.text("periodic");
   for (char c : p.periodic)
     if (c != 'x' && c != 'y' && c != 'z')
+  p.energy_gain_limit = non_negative("energy_gain_limit");
       throw ParameterError("periodic", "parameter 'periodic' lists axes among x, y, z");
   p.domain_min = set.vector("domain_min");
   p.domain_max = set.vector("domain_max");

@@ -27,6 +27,8 @@ void Simulation::flush_series(io::RunFileWriter& writer) {
   writer.append("/stats/ppe_residual", series_residual_.data(), rows);
   writer.append("/stats/wall_seconds", series_wall_.data(), rows);
   writer.append("/stats/kinetic_energy", series_energy_.data(), rows);
+  writer.append("/stats/mechanical_energy", series_mechanical_energy_.data(), rows);
+  writer.append("/stats/dt_limit", series_dt_limit_.data(), rows);
   writer.append("/stats/substeps", series_substeps_.data(), rows);
   writer.append("/stats/free_surface_particles", series_free_surface_.data(), rows);
   writer.append("/stats/squeeze_film_particles", series_film_.data(), rows);
@@ -37,10 +39,11 @@ void Simulation::flush_series(io::RunFileWriter& writer) {
     writer.append("/probes/" + model_.probes[k].name + "/time", series_time_.data(), rows);
     writer.append("/probes/" + model_.probes[k].name + "/value", values.data(), rows);
   }
-  for (auto* v : {&series_time_, &series_dt_, &series_residual_, &series_wall_, &series_energy_})
+  for (auto* v : {&series_time_, &series_dt_, &series_residual_, &series_wall_, &series_energy_,
+                  &series_mechanical_energy_})
     v->clear();
   for (auto* v : {&series_step_, &series_iterations_, &series_substeps_, &series_free_surface_,
-                  &series_film_})
+                  &series_film_, &series_dt_limit_})
     v->clear();
   probe_series_.clear();
   if (bodies_) bodies_->flush(writer);
@@ -139,6 +142,8 @@ RunSummary Simulation::run(const std::string& output_path,
       series_residual_.push_back(report.ppe_residual);
       series_wall_.push_back(report.wall_seconds);
       series_energy_.push_back(report.kinetic_energy);
+      series_mechanical_energy_.push_back(report.mechanical_energy);
+      series_dt_limit_.push_back(static_cast<std::int64_t>(report.dt_limit));
       series_substeps_.push_back(report.substeps);
       series_free_surface_.push_back(static_cast<std::int64_t>(report.free_surface_particles));
       series_film_.push_back(static_cast<std::int64_t>(report.squeeze_film_particles));

@@ -115,6 +115,19 @@ Simulation::Simulation(Model model)
     set_wall_position(wall, particles_);
   }
   probe_values_.assign(model_.probes.size(), 0.0);
+  // The energy budget starts from the scene as built: E(0) and the scale M_fluid |g| H.
+  {
+    const Vec3 down = g > 0 ? Vec3(prm.gravity / g) : Vec3::Zero();
+    double lowest = std::numeric_limits<double>::max(), highest = -lowest;
+    for (std::size_t i = 0; i < particles_.fluid_count; ++i) {
+      const double z = -down.dot(particles_.x(i));
+      lowest = std::min(lowest, z), highest = std::max(highest, z);
+    }
+    fluid_height_ = particles_.fluid_count > 0 ? highest - lowest + ctx_.d0 : 0.0;
+    moving_boundaries_ = !moving_walls_.empty() || bodies_ != nullptr;
+    const double scale = ctx_.mass * particles_.fluid_count * g * fluid_height_;
+    energy_budget_.start(mechanical_energy(), scale, prm.energy_gain_limit);
+  }
 
   // Modes resolved once from the parameters, and the step composed from what the scene uses.
   ghost_surface_ = prm.surface_pressure == "ghost";
@@ -137,25 +150,51 @@ Simulation::Simulation(Model model)
 
 Simulation::~Simulation() = default;
 
-double Simulation::choose_time_step(double until) const {
+TimeStepChoice Simulation::choose_time_step(double until) const {
   const auto& prm = model_.params;
-  if (prm.dt > 0) return prm.dt;
-  const double h = ctx_.h;
-  double dt = prm.dt_max;
-  if (max_speed_ > 0) dt = std::min(dt, prm.cfl * h / max_speed_);
-  double nu_max = prm.viscosity;
-  for (double nu_t : work_.eddy_viscosity) nu_max = std::max(nu_max, prm.viscosity + nu_t);
-  if (nu_max > 0) dt = std::min(dt, prm.viscous_number * h * h / nu_max);
-  const double g = prm.gravity.norm();
-  if (g > 0) dt = std::min(dt, 0.25 * std::sqrt(h / g));
-  // Land on the next frame time with at most two equal steps (no sliver steps).
-  const double remaining = until - time_;
-  if (remaining > 0) {
-    // At least one: a remainder below 1e-9 dt would otherwise give 0 steps and dt = inf.
-    const double steps = std::max(1.0, std::ceil(remaining / dt - 1e-9));
-    if (steps <= 2) dt = remaining / steps;
+  TimeStepInputs in;
+  in.fixed_dt = prm.dt;
+  in.cfl = prm.cfl, in.viscous_number = prm.viscous_number, in.dt_max = prm.dt_max;
+  in.h = ctx_.h;
+  in.max_speed = max_speed_;
+  in.max_viscosity = prm.viscosity;
+  for (double nu_t : work_.eddy_viscosity)
+    in.max_viscosity = std::max(in.max_viscosity, prm.viscosity + nu_t);
+  in.gravity = prm.gravity.norm();
+  in.time = time_, in.until = until;
+  return washout::choose_time_step(in);
+}
+
+double Simulation::mechanical_energy() const {
+  const Vec3& g = model_.params.gravity;
+  double energy = fluid_mechanical_energy(particles_, ctx_.mass, g);
+  for (std::size_t b = 0; bodies_ && b < bodies_->size(); ++b) {
+    if (!bodies_->dynamic(b)) continue;
+    const auto& m = bodies_->model(b);
+    const auto& s = bodies_->state(b);
+    const Eigen::Matrix3d R = rigid::rotation_matrix(s.orientation);
+    const Vec3 Iw = R * m.inertia * R.transpose() * s.angular_velocity;
+    energy += 0.5 * m.mass * s.velocity.squaredNorm() + 0.5 * s.angular_velocity.dot(Iw) -
+              m.mass * g.dot(s.position);
   }
-  return dt;
+  return energy;
+}
+
+// The energy guard (energy_budget.hpp), after the step: the work bound of the moving boundaries
+// over this step, then the budget.
+void Simulation::check_energy(StepReport& report) {
+  const auto& prm = model_.params;
+  if (!(prm.energy_gain_limit > 0)) return;
+  if (moving_boundaries_) {
+    const double g = prm.gravity.norm();
+    const double max_pressure = prm.rho0 * (g * fluid_height_ + 0.5 * max_speed_ * max_speed_);
+    energy_budget_.add_work_bound(report.dt,
+                                  moving_boundary_power_bound(particles_, ctx_.d0, max_pressure));
+  }
+  report.mechanical_energy = mechanical_energy();
+  report.energy_allowed = energy_budget_.allowed(report.mechanical_energy);
+  if (energy_budget_.excess(report.mechanical_energy) > 0)
+    throw UnstableError(energy_budget_.describe(report.mechanical_energy, report.time));
 }
 
 StepReport Simulation::step() { return step_until(std::numeric_limits<double>::infinity()); }
@@ -164,10 +203,13 @@ StepReport Simulation::step_until(double until) {
   const auto& prm = model_.params;
   const auto wall_start = std::chrono::steady_clock::now();
   StepInProgress now;
-  now.dt = choose_time_step(until);
+  const TimeStepChoice choice = choose_time_step(until);
+  now.dt = choice.dt;
+  now.report.dt_limit = choice.limit;
   if (prm.dt == 0 && now.dt < prm.dt_min) {
     std::ostringstream m;
-    m << "the adaptive time step fell to " << now.dt << " s, below dt_min = " << prm.dt_min << " s";
+    m << "the adaptive time step fell to " << now.dt << " s (set by the "
+      << step_limit_name(choice.limit) << " limit), below dt_min = " << prm.dt_min << " s";
     throw UnstableError(m.str());
   }
   now.t_new = time_ + now.dt;
@@ -271,6 +313,7 @@ void Simulation::run_stage(Stage stage, StepInProgress& now) {
       report.time = time_;
       report.dt = dt;
       report.max_speed = max_speed_;
+      check_energy(report);
       return;
     case Stage::checks:
       check_health(report);

@@ -15,10 +15,12 @@
 #include "engine/fluid/fluid_work.hpp"
 #include "engine/fluid/isph_stages.hpp"
 #include "engine/model/model.hpp"
+#include "engine/sim/energy_budget.hpp"
 #include "engine/sim/implicit_body_coupling.hpp"
 #include "engine/sim/simulation_errors.hpp"
 #include "engine/sim/stage_timer.hpp"
 #include "engine/sim/step_plan.hpp"
+#include "engine/sim/time_step_limits.hpp"
 #include "engine/solvers/linear_solver.hpp"
 
 namespace washout {
@@ -39,6 +41,11 @@ struct StepReport {
   std::size_t free_surface_particles = 0;
   double max_speed = 0.0;
   double kinetic_energy = 0.0;
+  // Fluid and dynamic bodies, kinetic + potential, and the most the budget allows now
+  // (energy_budget.hpp).
+  double mechanical_energy = 0.0;
+  double energy_allowed = 0.0;
+  StepLimit dt_limit = StepLimit::dt_max;  // which limit set dt (time_step_limits.hpp)
   std::size_t particles_in_walls = 0;
   std::size_t squeeze_film_particles = 0;  // fluid in gaps narrower than 2 d0 at a body
   long substeps = 0;          // rigid-body sub-steps in this step (0: the scene has no bodies)
@@ -121,7 +128,10 @@ class Simulation {
   void update_boundary_pressures();
 
  private:
-  double choose_time_step(double until) const;
+  TimeStepChoice choose_time_step(double until) const;
+  // Kinetic plus potential energy of the fluid and the dynamic bodies.
+  double mechanical_energy() const;
+  void check_energy(StepReport& report);
   void check_health(StepReport& report);
   void push_out_of_solids(StepReport& report);  // solid_push_out.cpp
   // One step's values shared by its stages.
@@ -168,6 +178,11 @@ class Simulation {
   long step_ = 0;
   std::uint64_t layout_fingerprint_ = 0;
   double max_speed_ = 0.0;
+  // The energy guard (energy_budget.hpp): the fluid's height extent along gravity at the start
+  // sets the scale M g H and the largest pressure the walls can meet.
+  EnergyBudget energy_budget_;
+  double fluid_height_ = 0.0;
+  bool moving_boundaries_ = false;  // moving walls or bodies: the budget counts their work
   double max_speed_limit_ = 0.0;
   Vec3 domain_lower_, domain_upper_;
   long wall_crossings_ = 0;
@@ -176,9 +191,10 @@ class Simulation {
   std::vector<double> probe_values_;
   StepReport last_report_;
   // Series buffered between frames, appended to the file at each frame.
-  std::vector<double> series_time_, series_dt_, series_residual_, series_wall_, series_energy_;
+  std::vector<double> series_time_, series_dt_, series_residual_, series_wall_, series_energy_,
+      series_mechanical_energy_;
   std::vector<std::int64_t> series_step_, series_iterations_, series_substeps_,
-      series_free_surface_, series_film_;
+      series_free_surface_, series_film_, series_dt_limit_;
   std::vector<double> probe_series_;  // rows of probe_values_
 };
 

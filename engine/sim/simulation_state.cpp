@@ -64,6 +64,8 @@ void Simulation::save_state(io::Checkpoint& c) const {
   c.numbers["time"] = time_;
   c.numbers["max_speed"] = max_speed_;  // the next adaptive step depends on it
   c.numbers["wall_seconds"] = last_report_.wall_seconds;
+  c.numbers["energy_initial"] = energy_budget_.initial();
+  c.numbers["energy_work_bound"] = energy_budget_.work_bound();
   put_components(c, "position", p.position);
   put_components(c, "velocity", p.velocity);
   put_components(c, "normal", p.normal);  // bodies' normals turn with them
@@ -113,6 +115,7 @@ void Simulation::restore_state(const io::Checkpoint& c) {
   last_report_.step = step_;
   last_report_.time = time_;
   last_report_.wall_seconds = c.number("wall_seconds");
+  energy_budget_.resume(c.number("energy_initial"), c.number("energy_work_bound"));
   get_components(c, "position", n, p.position);
   get_components(c, "velocity", n, p.velocity);
   get_components(c, "normal", n, p.normal);

@@ -1,0 +1,93 @@
+// The run's guards (docs/stability.md), each triggered on purpose by a small case of the real
+// program: exit 2, a message that says what fired, when and where, and a run file whose frames
+// up to the stop are readable, with the per-step energy and time-step limit in /stats.
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <filesystem>
+#include <string>
+
+#include "engine/io/run_file_reader.hpp"
+#include "reliability/run_washout.hpp"
+
+namespace washout {
+namespace {
+
+namespace fs = std::filesystem;
+const std::string kDamBreak = std::string(WASHOUT_SOURCE_DIR) + "/scenes/dambreak_2d.lua";
+
+struct Fired {
+  test::ProgramResult result;
+  fs::path file;
+};
+
+Fired run_dam_break(const std::string& name, const std::vector<std::string>& sets) {
+  const fs::path dir = fs::path(testing::TempDir()) / ("guard_" + name);
+  fs::remove_all(dir);
+  fs::create_directories(dir);
+  std::vector<std::string> args = {"run",       kDamBreak, "--out", dir.string(), "--quiet",
+                                   "--threads", "1",       "--set", "d0=0.0146"};
+  for (const auto& s : sets) args.insert(args.end(), {"--set", s});
+  Fired f;
+  f.result = test::run_washout(args, (dir / "log.txt").string(), 120.0);
+  f.file = dir / "dambreak_2d.h5";
+  return f;
+}
+
+void expect_fired(const Fired& f, const std::string& fragment) {
+  std::printf("%s\n", f.result.output.substr(f.result.output.find("unstable at")).c_str());
+  EXPECT_FALSE(f.result.timed_out);
+  EXPECT_EQ(f.result.status, 2);
+  EXPECT_NE(f.result.output.find("unstable at t = "), std::string::npos) << f.result.output;
+  EXPECT_NE(f.result.output.find(fragment), std::string::npos) << f.result.output;
+  EXPECT_NE(f.result.output.find("The last good state is frame"), std::string::npos);
+  io::RunFileReader file(f.file.string());
+  ASSERT_GE(file.frame_count(), 1u);
+  const auto frame = file.read_frame(file.frame_count() - 1);  // the last frame reads back
+  EXPECT_GT(frame.position.size(), 0u);
+  if (!file.has("/stats/time")) return;  // stopped in its first step: no step to record
+  const auto energy = file.read_doubles("/stats/mechanical_energy");
+  const auto limit = file.read_doubles("/stats/dt_limit");
+  EXPECT_EQ(energy.size(), file.read_doubles("/stats/time").size());
+  EXPECT_EQ(limit.size(), energy.size());
+}
+
+// alpha = 1 at a tenth of the default time step: the density-invariance term, scaled by
+// 1/dt^2, overshoots and the fluid gains energy (docs/stability.md, the (dt, alpha) map). The
+// energy guard fires before any particle reaches the speed limit.
+TEST(Guards, EnergyGainStopsTheRun) {
+  const Fired f = run_dam_break("energy", {"end_time=0.27", "dt_max=0.01", "cfl=0.05", "alpha=1"});
+  expect_fired(f, "energy gain: the mechanical energy of the fluid and bodies is");
+  const auto energy = io::RunFileReader(f.file.string()).read_doubles("/stats/mechanical_energy");
+  // Before the blow-up the dam break only loses energy: its largest value is the start's, to
+  // within the tolerance (0.1 x M g H = 12.2 J/m here on 61 J/m).
+  EXPECT_LT(*std::max_element(energy.begin(), energy.end() - 1), energy.front() + 12.2);
+}
+
+TEST(Guards, RunawayVelocityNamesTheParticle) {
+  const Fired f = run_dam_break("speed", {"end_time=0.2", "max_speed=0.5"});
+  expect_fired(f, "runaway velocity: particle ");
+}
+
+TEST(Guards, EscapingTheDomainNamesWhere) {
+  // The domain ends 2 cm beyond the column's foot: the surge leaves it.
+  const Fired f =
+      run_dam_break("domain", {"end_time=0.2", "domain_min={-0.1,-0.1}", "domain_max={0.17,0.5}"});
+  expect_fired(f, "left the domain at (");
+}
+
+TEST(Guards, StalledPressureSolveSaysSo) {
+  const Fired f =
+      run_dam_break("solver", {"end_time=0.1", "solver=pcg", "solver_max_iterations=3"});
+  expect_fired(f, "the pressure solver did not converge in 3 iterations");
+}
+
+TEST(Guards, TimeStepBelowTheMinimumSaysWhichLimit) {
+  // A viscosity of 10 m^2/s asks for a step of 3.8e-6 s, below dt_min = 1e-5 s.
+  const Fired f = run_dam_break("dt_min", {"end_time=0.1", "viscosity=10", "dt_min=1e-5"});
+  expect_fired(f, "below dt_min");
+  EXPECT_NE(f.result.output.find("(set by the viscous limit)"), std::string::npos);
+}
+
+}  // namespace
+}  // namespace washout
