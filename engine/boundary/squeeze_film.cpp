@@ -13,7 +13,7 @@ std::int64_t solid_of(const Particles& p, std::size_t w) {
 }  // namespace
 
 std::size_t mark_squeeze_film(const SphContext& ctx, const NeighborList& list, const Particles& p,
-                              FluidWork& work) {
+                              BoundaryWork& work) {
   const std::size_t n = p.fluid_count;
   work.film.assign(n, 0);
   // Faces at more than 120 degrees. This takes in the open water beside a box's bottom
@@ -66,7 +66,8 @@ std::size_t mark_squeeze_film(const SphContext& ctx, const NeighborList& list, c
 }
 
 void set_film_pressure(const SphContext& ctx, const NeighborList& list, const Particles& p,
-                       const Vec3& gravity, FluidWork& work) {
+                       const Vec3& gravity, const std::vector<std::uint8_t>& free_surface,
+                       BoundaryWork& work) {
   const std::size_t n = p.fluid_count;
   work.film_pressure.assign(n, 0.0);
 #pragma omp parallel for schedule(dynamic, 256)
@@ -76,7 +77,7 @@ void set_film_pressure(const SphContext& ctx, const NeighborList& list, const Pa
     int count = 0;
     for (std::uint64_t k = list.offset[i]; k < list.offset[i + 1]; ++k) {
       const std::size_t j = list.index[k];
-      if (j >= n || work.film[j] || work.free_surface[j]) continue;
+      if (j >= n || work.film[j] || free_surface[j]) continue;
       double d[3];
       ctx.displacement(p, i, j, d);
       double hydrostatic = 0.0;

@@ -13,9 +13,9 @@
 // What is left of the layer when the gap closes below d0 is moved out of it (free_spot.hpp).
 #include <cstddef>
 
+#include "engine/boundary/boundary_state.hpp"
 #include "engine/core/neighbor_grid.hpp"
 #include "engine/core/sph_context.hpp"
-#include "engine/fluid/fluid_work.hpp"
 
 namespace washout {
 
@@ -23,11 +23,13 @@ namespace washout {
 // solids, one of them a body, whose faces look at each other (normals at more than 120
 // degrees): a gap narrower than 2 d0, and the water at its mouth. Returns the number marked.
 std::size_t mark_squeeze_film(const SphContext& ctx, const NeighborList& list, const Particles& p,
-                              FluidWork& work);
+                              BoundaryWork& work);
 
 // work.film_pressure[i] of each film particle: the mean over its fluid neighbours that are
-// neither film nor free surface of P_j + rho0 g.(x_i - x_j), with last step's P_j; 0 with none.
+// neither film nor free surface (free_surface[j] != 0) of P_j + rho0 g.(x_i - x_j), with last
+// step's P_j; 0 with none.
 void set_film_pressure(const SphContext& ctx, const NeighborList& list, const Particles& p,
-                       const Vec3& gravity, FluidWork& work);
+                       const Vec3& gravity, const std::vector<std::uint8_t>& free_surface,
+                       BoundaryWork& work);
 
 }  // namespace washout

@@ -16,7 +16,8 @@ void mark_active_boundary(const NeighborList& list, const Particles& p,
 }
 
 void update_marker_velocities(const SphContext& ctx, const NeighborGrid& grid, const Particles& p,
-                              const std::vector<std::uint8_t>& active, FluidWork& work) {
+                              const std::vector<std::uint8_t>& active, const WallConditions& walls,
+                              BoundaryWork& work) {
   const std::size_t n = p.size();
   for (int a = 0; a < 3; ++a) work.marker_velocity[a].resize(n, 0.0);
 #pragma omp parallel for schedule(dynamic, 256)
@@ -42,13 +43,13 @@ void update_marker_velocities(const SphContext& ctx, const NeighborGrid& grid, c
       rel[a] = u_m[a] - u_wall[a];
       un += rel[a] * normal[a];
     }
-    const double tangential_factor = 2.0 * work.wall_slip[w - p.fluid_count] - 1.0;
+    const double tangential_factor = 2.0 * walls.slip[w - p.fluid_count] - 1.0;
     // Fluid coming at the wall (un < 0) meets a marker coming back at it, so that the
     // wall's share of the divergence stops it. Fluid leaving the wall faster than the
     // separation speed U meets a marker leaving with it: a wall pushes but does not pull, and
     // the fluid may separate (below U, the blend keeps still water symmetric about the wall).
     const double leaving =
-        un > 0.0 && work.separation_speed > 0.0 ? std::min(1.0, un / work.separation_speed) : 0.0;
+        un > 0.0 && walls.separation_speed > 0.0 ? std::min(1.0, un / walls.separation_speed) : 0.0;
     const double marker_un = -un + 2.0 * leaving * un;
     for (int a = 0; a < 3; ++a) {
       const double tangential_part = rel[a] - un * normal[a];

@@ -8,9 +8,9 @@
 //   pressure: P_m + rho0 g . (x_w - x_m), the hydrostatic extrapolation (output, body loads).
 #include <vector>
 
+#include "engine/boundary/boundary_state.hpp"
 #include "engine/core/neighbor_grid.hpp"
 #include "engine/core/sph_context.hpp"
-#include "engine/fluid/fluid_work.hpp"
 
 namespace washout {
 
@@ -19,7 +19,8 @@ void mark_active_boundary(const NeighborList& list, const Particles& p,
                           std::vector<std::uint8_t>& active);
 
 void update_marker_velocities(const SphContext& ctx, const NeighborGrid& grid, const Particles& p,
-                              const std::vector<std::uint8_t>& active, FluidWork& work);
+                              const std::vector<std::uint8_t>& active, const WallConditions& walls,
+                              BoundaryWork& work);
 
 void update_wall_pressures(const SphContext& ctx, const NeighborGrid& grid, const Vec3& gravity,
                            const std::vector<std::uint8_t>& active, Particles& p);

@@ -4,7 +4,7 @@ namespace washout {
 
 void update_wall_accelerations(const Particles& p, const std::vector<std::uint8_t>& solved_body,
                                double dt, std::array<std::vector<double>, 3>& previous,
-                               FluidWork& work) {
+                               BoundaryWork& work) {
   const std::size_t n = p.size(), first = p.fluid_count;
   for (int a = 0; a < 3; ++a) {
     work.wall_acceleration[a].assign(n, 0.0);

@@ -10,8 +10,8 @@
 #include <cstdint>
 #include <vector>
 
+#include "engine/boundary/boundary_state.hpp"
 #include "engine/core/particles.hpp"
-#include "engine/fluid/fluid_work.hpp"
 
 namespace washout {
 
@@ -19,6 +19,6 @@ namespace washout {
 // boundary velocities of the last call (empty on the first: a_w = 0) and is updated.
 void update_wall_accelerations(const Particles& p, const std::vector<std::uint8_t>& solved_body,
                                double dt, std::array<std::vector<double>, 3>& previous,
-                               FluidWork& work);
+                               BoundaryWork& work);
 
 }  // namespace washout

@@ -36,7 +36,8 @@ bool gradient_correction_matrix(const SphContext& ctx, const NeighborList& list,
 }  // namespace
 
 void correct_velocity(const SphContext& ctx, const NeighborList& list, Particles& p,
-                      const FluidWork& work, const Vec3& gravity, double dt, bool symmetric_form) {
+                      const FluidWork& work, const WallConditions& walls, const Vec3& gravity,
+                      double dt, bool symmetric_form) {
   const std::size_t n = p.fluid_count;
 #pragma omp parallel for schedule(static)
   for (std::size_t i = 0; i < n; ++i) {
@@ -50,7 +51,7 @@ void correct_velocity(const SphContext& ctx, const NeighborList& list, Particles
     // A boundary neighbour carries the virtual pressure of the Neumann wall condition.
     const auto neighbor_pressure = [&](const NeighborPair& q) {
       return q.j < n ? p.pressure[q.j]
-                     : Pi + wall_pressure_jump(ctx, p, work, gravity, i, q.j, q.d, dt);
+                     : Pi + wall_pressure_jump(ctx, p, work, walls, gravity, i, q.j, q.d, dt);
     };
     double grad[3];
     if (symmetric_form && !corrected)

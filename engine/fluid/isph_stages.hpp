@@ -29,7 +29,7 @@ void predict_velocity(const SphContext& ctx, const NeighborList& list, const Par
 // Wall function: the first fluid layer loses the part of the smooth-wall law-of-the-wall stress
 // that the resolved viscous term does not carry, scaled by (1 - slip) (wall_shear.cpp).
 void apply_wall_shear(const SphContext& ctx, const NeighborList& list, const Particles& p,
-                      double viscosity, double dt, FluidWork& work);
+                      const WallConditions& walls, double viscosity, double dt, FluidWork& work);
 // u_* of the law of the wall for a tangential speed u_t at distance y (viscous sublayer below
 // y+ = 11.06, log layer above).
 double friction_velocity(double u_t, double y, double nu);
@@ -44,9 +44,11 @@ struct PpeStatistics {
 //   <lap P>_i = (rho0/dt) <div u*>_i + alpha (rho0 - <rho>_i) / dt^2,  P = 0 on the free surface
 // (ghost_surface: at d0/2 beyond the surface particles; otherwise on them), walls by the Neumann
 // condition through virtual pressures P_w = P_i + g_iw.
+// walls: what the scene fixes for its walls (none: a fluid without boundary particles).
 PpeStatistics assemble_pressure_poisson(const SphContext& ctx, const NeighborList& list,
                                         const Particles& p, const Vec3& gravity, double alpha,
-                                        double dt, bool ghost_surface, FluidWork& work);
+                                        double dt, bool ghost_surface, FluidWork& work,
+                                        const WallConditions& walls = WallConditions::none());
 // Copies the solution back to the fluid particles' pressure (P = 0 on the free surface).
 void scatter_pressure(const FluidWork& work, Particles& p);
 // Initial guess for an iterative solve: the previous pressure of each unknown.
@@ -58,22 +60,22 @@ void gather_pressure_guess(const Particles& p, FluidWork& work);
 //   variation rho0 g_t, so that a particle beside a vertical wall keeps its full pressure support
 //   (the wall's tangential share of <grad P> would otherwise be missing).
 inline double wall_pressure_jump(const SphContext& ctx, const Particles& p, const FluidWork& work,
-                                 const Vec3& gravity, std::size_t i, std::size_t w,
-                                 const double d_iw[3], double dt) {
-  if (work.dynamic_wall) {
+                                 const WallConditions& walls, const Vec3& gravity, std::size_t i,
+                                 std::size_t w, const double d_iw[3], double dt) {
+  if (walls.dynamic) {
     // dP/dn = rho0 (g - a_w).n: the fluid keeps the wall's normal acceleration; along the wall
     // the hydrostatic variation. A wall sliding along itself (a gate lifted) leaves P alone.
     double gr = 0.0, an = 0.0, rn = 0.0;
     for (int a = 0; a < ctx.dim; ++a) {
       const double n = p.normal[a][w], r = -d_iw[a];
       gr += gravity[a] * r;
-      an += work.wall_acceleration[a][w] * n;
+      an += work.boundary.wall_acceleration[a][w] * n;
       rn += r * n;
     }
     // Only where i lies in front of w's face (r . n < 0): beside a convex corner the fluid sees
     // the other face's particles, whose normal motion is not its own. A squeeze film does not
     // follow the body that closes it (squeeze_film.hpp).
-    return ctx.rho0 * (rn < 0.0 && !work.in_film(i) ? gr - an * rn : gr);
+    return ctx.rho0 * (rn < 0.0 && !work.boundary.in_film(i) ? gr - an * rn : gr);
   }
   double un = 0.0, rn = 0.0, gr = 0.0, gn = 0.0;
   for (int a = 0; a < ctx.dim; ++a) {
@@ -91,7 +93,8 @@ inline double wall_pressure_jump(const SphContext& ctx, const Particles& p, cons
 
 // Step 3, corrector: u^{n+1} = u* - (dt/rho0) <grad P> (corrector.cpp).
 void correct_velocity(const SphContext& ctx, const NeighborList& list, Particles& p,
-                      const FluidWork& work, const Vec3& gravity, double dt, bool symmetric_form);
+                      const FluidWork& work, const WallConditions& walls, const Vec3& gravity,
+                      double dt, bool symmetric_form);
 // Free-surface particles take this fraction of their neighbourhood's mean velocity (XSPH on the
 // surface only; surface_smoothing.cpp).
 void smooth_surface_velocity(const SphContext& ctx, const NeighborList& list, Particles& p,

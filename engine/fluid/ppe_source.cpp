@@ -9,8 +9,8 @@
 namespace washout {
 
 void subtract_ppe_source(const SphContext& ctx, const NeighborList& list, const Particles& p,
-                         const Vec3& gravity, double alpha, double dt, const PpeRowFlags& flags,
-                         FluidWork& work) {
+                         const WallConditions& walls, const Vec3& gravity, double alpha, double dt,
+                         const PpeRowFlags& flags, FluidWork& work) {
   const std::size_t n = p.fluid_count;
   const double density_scale = alpha * ctx.rho0 / (dt * dt);
 #pragma omp parallel for schedule(static)
@@ -23,7 +23,7 @@ void subtract_ppe_source(const SphContext& ctx, const NeighborList& list, const 
           const std::size_t j = q.j;
           if (j < n) {
             for (int a = 0; a < ctx.dim; ++a) u_j[a] = work.u_star[a][j];
-          } else if (work.dynamic_wall) {
+          } else if (walls.dynamic) {
             // The wall's velocity plus the normal part of the virtual marker's velocity relative to
             // it (the fluid's, mirrored at the start of the step), with the same body-force
             // increment dt g as the fluid (the wall jump carries g - a_w). The tangential part is
@@ -31,7 +31,8 @@ void subtract_ppe_source(const SphContext& ctx, const NeighborList& list, const 
             // would read as a divergence.
             double marker_un = 0.0;
             for (int a = 0; a < ctx.dim; ++a)
-              marker_un += (work.marker_velocity[a][j] - p.velocity[a][j]) * p.normal[a][j];
+              marker_un +=
+                  (work.boundary.marker_velocity[a][j] - p.velocity[a][j]) * p.normal[a][j];
             for (int a = 0; a < ctx.dim; ++a)
               u_j[a] = p.velocity[a][j] + marker_un * p.normal[a][j] + dt * gravity[a];
           } else {

@@ -10,7 +10,8 @@
 namespace washout {
 
 void add_known_pressures(const SphContext& ctx, const NeighborList& list, const Particles& p,
-                         const Vec3& gravity, double dt, FluidWork& work) {
+                         const WallConditions& walls, const Vec3& gravity, double dt,
+                         FluidWork& work) {
   const std::size_t n = p.fluid_count;
   work.rhs.assign(work.matrix.rows, 0.0);
 #pragma omp parallel for schedule(static)
@@ -21,9 +22,9 @@ void add_known_pressures(const SphContext& ctx, const NeighborList& list, const 
     for_each_neighbor(ctx, list, p, i, [&](const NeighborPair& q) {
       const double c = -ctx.laplacian_weight(q.r, q.r2);
       if (q.j >= n)
-        known += c * wall_pressure_jump(ctx, p, work, gravity, i, q.j, q.d, dt);
-      else if (work.unknown[q.j] < 0 && work.in_film(q.j))
-        known += c * work.film_pressure[q.j];
+        known += c * wall_pressure_jump(ctx, p, work, walls, gravity, i, q.j, q.d, dt);
+      else if (work.unknown[q.j] < 0 && work.boundary.in_film(q.j))
+        known += c * work.boundary.film_pressure[q.j];
     });
     work.rhs[row] = known;
   }

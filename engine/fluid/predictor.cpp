@@ -26,7 +26,7 @@ void predict_velocity(const SphContext& ctx, const NeighborList& list, const Par
       else
         weight *= viscosity;
       for (int a = 0; a < ctx.dim; ++a) {
-        const double uj = fluid ? p.velocity[a][q.j] : work.marker_velocity[a][q.j];
+        const double uj = fluid ? p.velocity[a][q.j] : work.boundary.marker_velocity[a][q.j];
         lap[a] += weight * (p.velocity[a][i] - uj);
       }
     });

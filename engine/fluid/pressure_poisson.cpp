@@ -33,7 +33,7 @@ std::size_t number_pressure_unknowns(const Particles& p, bool ghost_surface, Flu
   // A particle whose pressure is given, not solved for: P = 0 on it (an isolated drop, or any
   // surface particle without the ghost form) or the squeeze-film pressure.
   const auto given = [&](std::size_t i) {
-    return work.in_film(i) || work.free_surface[i] == FluidWork::kIsolated ||
+    return work.boundary.in_film(i) || work.free_surface[i] == FluidWork::kIsolated ||
            (!ghost_surface && work.free_surface[i] == FluidWork::kSurface);
   };
   work.unknown.assign(n, -1);
@@ -45,12 +45,13 @@ std::size_t number_pressure_unknowns(const Particles& p, bool ghost_surface, Flu
 
 PpeStatistics assemble_pressure_poisson(const SphContext& ctx, const NeighborList& list,
                                         const Particles& p, const Vec3& gravity, double alpha,
-                                        double dt, bool ghost_surface, FluidWork& work) {
+                                        double dt, bool ghost_surface, FluidWork& work,
+                                        const WallConditions& walls) {
   work.matrix.rows = number_pressure_unknowns(p, ghost_surface, work);
   PpeRowFlags flags;
   assemble_ppe_matrix(ctx, list, p, ghost_surface, work, flags);
-  add_known_pressures(ctx, list, p, gravity, dt, work);
-  subtract_ppe_source(ctx, list, p, gravity, alpha, dt, flags, work);
+  add_known_pressures(ctx, list, p, walls, gravity, dt, work);
+  subtract_ppe_source(ctx, list, p, walls, gravity, alpha, dt, flags, work);
   PpeStatistics stats;
   stats.unknowns = work.matrix.rows;
   stats.nonzeros = work.matrix.nonzeros();
@@ -67,9 +68,9 @@ void gather_pressure_guess(const Particles& p, FluidWork& work) {
 void scatter_pressure(const FluidWork& work, Particles& p) {
 #pragma omp parallel for schedule(static)
   for (std::size_t i = 0; i < p.fluid_count; ++i)
-    p.pressure[i] = work.unknown[i] >= 0 ? work.solution[work.unknown[i]]
-                    : work.in_film(i)    ? work.film_pressure[i]
-                                         : 0.0;
+    p.pressure[i] = work.unknown[i] >= 0       ? work.solution[work.unknown[i]]
+                    : work.boundary.in_film(i) ? work.boundary.film_pressure[i]
+                                               : 0.0;
 }
 
 }  // namespace washout

@@ -35,13 +35,14 @@ void assemble_ppe_matrix(const SphContext& ctx, const NeighborList& list, const 
 // g_iw (the Neumann wall condition) gives c_iw g_iw, a squeeze-film neighbour c_ij P_film
 // (ppe_wall_condition.cpp). Sets work.rhs.
 void add_known_pressures(const SphContext& ctx, const NeighborList& list, const Particles& p,
-                         const Vec3& gravity, double dt, FluidWork& work);
+                         const WallConditions& walls, const Vec3& gravity, double dt,
+                         FluidWork& work);
 
 // The source b_i, subtracted from work.rhs (ppe_source.cpp): the velocity divergence of the
 // predicted velocity and the density-invariance term, which acts on interior rows only.
 void subtract_ppe_source(const SphContext& ctx, const NeighborList& list, const Particles& p,
-                         const Vec3& gravity, double alpha, double dt, const PpeRowFlags& flags,
-                         FluidWork& work);
+                         const WallConditions& walls, const Vec3& gravity, double alpha, double dt,
+                         const PpeRowFlags& flags, FluidWork& work);
 
 // A closed body of fluid with no free surface (a filled tank, a periodic channel) defines its
 // pressure only up to a constant: its right-hand side is made compatible and one value fixed

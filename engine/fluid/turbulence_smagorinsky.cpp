@@ -17,7 +17,7 @@ void compute_eddy_viscosity(const SphContext& ctx, const NeighborList& list, con
     for_each_neighbor(ctx, list, p, i, [&](const NeighborPair& q) {
       const double f = ctx.gradient_weight(q.r);
       for (int a = 0; a < ctx.dim; ++a) {
-        const double uj = q.j < n ? p.velocity[a][q.j] : work.marker_velocity[a][q.j];
+        const double uj = q.j < n ? p.velocity[a][q.j] : work.boundary.marker_velocity[a][q.j];
         const double du = uj - p.velocity[a][i];
         for (int b = 0; b < ctx.dim; ++b) grad[a][b] += du * f * q.d[b];
       }

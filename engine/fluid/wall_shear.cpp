@@ -37,7 +37,7 @@ double friction_velocity(double u_t, double y, double nu) {
 }
 
 void apply_wall_shear(const SphContext& ctx, const NeighborList& list, const Particles& p,
-                      double viscosity, double dt, FluidWork& work) {
+                      const WallConditions& walls, double viscosity, double dt, FluidWork& work) {
   const std::size_t n = p.fluid_count;
 #pragma omp parallel for schedule(static)
   for (std::size_t i = 0; i < n; ++i) {
@@ -53,7 +53,7 @@ void apply_wall_shear(const SphContext& ctx, const NeighborList& list, const Par
       if (r2 < nearest_r2) nearest_r2 = r2, nearest = w;
     }
     if (nearest == 0) continue;
-    const double slip = work.wall_slip[nearest - n];
+    const double slip = walls.slip[nearest - n];
     if (slip >= 1.0) continue;
     double d[3];
     ctx.displacement(p, i, nearest, d);

@@ -137,7 +137,7 @@ CouplingReport ImplicitBodyCoupling::couple(const SphContext& ctx, const Neighbo
     Vec3 dT, dw;
     unpack(dxi, dim, first_column[b], dT, dw);
     const Vec3 du = dT + dw.cross(p.x(w) - centre[b]);
-    for (int a = 0; a < 3; ++a) work.wall_acceleration[a][w] = du[a] / dt;
+    for (int a = 0; a < 3; ++a) work.boundary.wall_acceleration[a][w] = du[a] / dt;
   }
   return report;
 }

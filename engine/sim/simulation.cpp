@@ -60,9 +60,9 @@ Simulation::Simulation(Model model)
   BuiltParticles built = washout::build_particles(model_);
   particles_ = std::move(built.particles);
   moving_walls_ = std::move(built.moving_walls);
-  work_.wall_slip = std::move(built.wall_slip);
+  walls_.slip = std::move(built.wall_slip);
   // The speed a particle gains falling one spacing: slower departures from a wall are noise.
-  work_.separation_speed = std::sqrt(2.0 * model_.params.gravity.norm() * ctx_.d0);
+  walls_.separation_speed = std::sqrt(2.0 * model_.params.gravity.norm() * ctx_.d0);
   if (!built.bodies.empty()) {
     bodies_ = std::make_unique<RigidBodySystem>(model_, std::move(built.bodies),
                                                 std::move(built.body_first));
@@ -77,8 +77,8 @@ Simulation::Simulation(Model model)
     solved_bodies_.push_back(bodies_->dynamic(b));
     dynamic_bodies = dynamic_bodies || solved_bodies_.back();
   }
-  work_.dynamic_wall = model_.params.wall_pressure == "dynamic" ||
-                       (model_.params.wall_pressure == "auto" && dynamic_bodies);
+  walls_.dynamic = model_.params.wall_pressure == "dynamic" ||
+                   (model_.params.wall_pressure == "auto" && dynamic_bodies);
 
   // Domain: given, or the scene's bounding box with a generous margin (for blow-up detection).
   const auto& prm = model_.params;
@@ -137,7 +137,7 @@ Simulation::Simulation(Model model)
                                            : SolverChoice::automatic;
   SceneFeatures features;
   features.bodies = bodies_ != nullptr;
-  features.dynamic_wall = work_.dynamic_wall;
+  features.dynamic_wall = walls_.dynamic;
   features.turbulence = prm.turbulence == "smagorinsky";
   features.wall_friction = prm.wall_friction == "log_law";
   features.shifting = prm.shifting > 0 || prm.shifting_with_speed > 0;
@@ -241,11 +241,13 @@ void Simulation::run_stage(Stage stage, StepInProgress& now) {
       return;
     case Stage::wall_markers:
       mark_active_boundary(neighbors_, particles_, active_boundary_);
-      update_marker_velocities(ctx_, grid_, particles_, active_boundary_, work_);
+      update_marker_velocities(ctx_, grid_, particles_, active_boundary_, walls_, work_.boundary);
       return;
     case Stage::squeeze_film:
-      report.squeeze_film_particles = mark_squeeze_film(ctx_, neighbors_, particles_, work_);
-      set_film_pressure(ctx_, neighbors_, particles_, prm.gravity, work_);
+      report.squeeze_film_particles =
+          mark_squeeze_film(ctx_, neighbors_, particles_, work_.boundary);
+      set_film_pressure(ctx_, neighbors_, particles_, prm.gravity, work_.free_surface,
+                        work_.boundary);
       return;
     case Stage::turbulence:
       compute_eddy_viscosity(ctx_, neighbors_, particles_, prm.smagorinsky_constant, work_);
@@ -254,7 +256,7 @@ void Simulation::run_stage(Stage stage, StepInProgress& now) {
       predict_velocity(ctx_, neighbors_, particles_, prm.viscosity, prm.gravity, dt, work_);
       return;
     case Stage::wall_shear:
-      apply_wall_shear(ctx_, neighbors_, particles_, prm.viscosity, dt, work_);
+      apply_wall_shear(ctx_, neighbors_, particles_, walls_, prm.viscosity, dt, work_);
       return;
     case Stage::moving_walls:
       for (auto& wall : moving_walls_) {
@@ -268,17 +270,18 @@ void Simulation::run_stage(Stage stage, StepInProgress& now) {
       bodies_->set_prescribed_velocities(now.t_new, particles_);
       return;
     case Stage::wall_accelerations:
-      update_wall_accelerations(particles_, solved_bodies_, dt, previous_wall_velocity_, work_);
+      update_wall_accelerations(particles_, solved_bodies_, dt, previous_wall_velocity_,
+                                work_.boundary);
       return;
     case Stage::ppe_assembly:
       now.ppe = assemble_pressure_poisson(ctx_, neighbors_, particles_, prm.gravity, prm.alpha, dt,
-                                          ghost_surface_, work_);
+                                          ghost_surface_, work_, walls_);
       return;
     case Stage::ppe_solve:
       solve_pressure(now);
       return;
     case Stage::body_loads:
-      if (work_.dynamic_wall) {
+      if (walls_.dynamic) {
         const CouplingReport coupling = coupling_.couple(ctx_, neighbors_, grid_, particles_, work_,
                                                          *solver_, *bodies_, prm.gravity, dt);
         total_ppe_iterations_ += coupling.iterations;
@@ -287,7 +290,8 @@ void Simulation::run_stage(Stage stage, StepInProgress& now) {
       }
       return;
     case Stage::corrector:
-      correct_velocity(ctx_, neighbors_, particles_, work_, prm.gravity, dt, symmetric_gradient_);
+      correct_velocity(ctx_, neighbors_, particles_, work_, walls_, prm.gravity, dt,
+                       symmetric_gradient_);
       return;
     case Stage::surface_smoothing:
       smooth_surface_velocity(ctx_, neighbors_, particles_, work_, prm.surface_smoothing,

@@ -158,7 +158,8 @@ class Simulation {
   SphContext ctx_;
   NeighborGrid grid_;
   NeighborList neighbors_;
-  FluidWork work_;
+  WallConditions walls_;  // fixed for the run (boundary_state.hpp)
+  FluidWork work_;        // refilled every step
   ImplicitBodyCoupling coupling_;
   std::array<std::vector<double>, 3> previous_wall_velocity_;  // for the wall acceleration
   std::vector<std::uint8_t> solved_bodies_;  // 1: a dynamic body, its velocity solved by coupling_

@@ -46,7 +46,7 @@ std::uint64_t Simulation::compute_layout_fingerprint() const {
     hash = hash_vector(p.position[a], hash);
     hash = hash_vector(p.normal[a], hash);
   }
-  return hash_vector(work_.wall_slip, hash);
+  return hash_vector(walls_.slip, hash);
 }
 
 void Simulation::save_state(io::Checkpoint& c) const {

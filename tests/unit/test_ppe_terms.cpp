@@ -23,6 +23,7 @@ struct Block {
   Particles p;
   NeighborList list;
   FluidWork work;
+  WallConditions walls;  // the floor: Neumann condition, free slip
   Block(int nx, int ny, int floor_layers, bool periodic_x, bool periodic_y)
       : ctx(2, kD0, 1.2, kRho0, box(nx, ny, periodic_x, periodic_y)) {
     p.dim = 2;
@@ -39,7 +40,7 @@ struct Block {
     grid.build_list(p, p.size(), 2 * ctx.h, list);
     compute_summation_density(ctx, list, p);
     for (int a = 0; a < 3; ++a) work.u_star[a].assign(p.fluid_count, 0.0);
-    work.wall_slip.assign(p.size() - p.fluid_count, 1.0);
+    walls.slip.assign(p.size() - p.fluid_count, 1.0);
   }
   static PeriodicBox box(int nx, int ny, bool px, bool py) {
     PeriodicBox b;
@@ -103,8 +104,8 @@ TEST(PpeTerms, FloorAndGhostSurfaceGiveHydrostaticPressure) {
     const double dt = 1e-3, H = ny * kD0;
     for (std::size_t i = 0; i < b.p.fluid_count; ++i) b.work.u_star[1][i] = -kG * dt;
     detect_free_surface(b.ctx, b.list, b.p, 0.9, b.work);
-    const auto stats =
-        assemble_pressure_poisson(b.ctx, b.list, b.p, Vec3(0, -kG, 0), 0.05, dt, true, b.work);
+    const auto stats = assemble_pressure_poisson(b.ctx, b.list, b.p, Vec3(0, -kG, 0), 0.05, dt,
+                                                 true, b.work, b.walls);
     EXPECT_EQ(stats.pinned_components, 0u);
     std::vector<double> x(stats.unknowns, 0.0);
     const auto report = make_cholmod_solver()->solve(b.work.matrix, b.work.rhs, x);
