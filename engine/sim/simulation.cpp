@@ -137,6 +137,9 @@ Simulation::Simulation(Model model)
                                            : SolverChoice::automatic;
   SceneFeatures features;
   features.bodies = bodies_ != nullptr;
+  for (std::size_t b = 0; bodies_ && b < bodies_->size(); ++b)
+    features.prescribed_bodies =
+        features.prescribed_bodies || bodies_->model(b).motion == rigid::MotionKind::kPrescribed;
   features.dynamic_wall = walls_.dynamic;
   features.turbulence = prm.turbulence == "smagorinsky";
   features.wall_friction = prm.wall_friction == "log_law";

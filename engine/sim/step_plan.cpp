@@ -61,7 +61,7 @@ std::vector<Stage> compose_step(const SceneFeatures& f) {
   plan.push_back(Stage::predictor);
   if (f.wall_friction) plan.push_back(Stage::wall_shear);
   if (f.moving_walls) plan.push_back(Stage::moving_walls);
-  if (f.bodies) plan.push_back(Stage::prescribed_bodies);
+  if (f.prescribed_bodies) plan.push_back(Stage::prescribed_bodies);
   if (f.dynamic_wall) plan.push_back(Stage::wall_accelerations);
   plan.insert(plan.end(), {Stage::ppe_assembly, Stage::ppe_solve});
   if (f.bodies)

@@ -40,6 +40,7 @@ const char* stage_name(Stage stage);
 // What a scene uses, resolved once from its model and parameters.
 struct SceneFeatures {
   bool bodies = false;             // any rigid body
+  bool prescribed_bodies = false;  // a body that follows a prescribed motion
   bool dynamic_wall = false;       // walls in the divergence (docs/method.md), bodies solved with P
   bool turbulence = false;         // a sub-particle-scale model
   bool wall_friction = false;      // the law-of-the-wall stress

@@ -37,12 +37,14 @@ TEST(StepPlan, BodiesBringTheirStagesAndNothingElse) {
   f.bodies = f.dynamic_wall = true;
   const auto plan = compose_step(f);
   std::printf("floating body: %s\n", text(plan).c_str());
-  for (Stage s : {Stage::squeeze_film, Stage::prescribed_bodies, Stage::wall_accelerations,
-                  Stage::body_loads, Stage::bodies})
+  for (Stage s : {Stage::squeeze_film, Stage::wall_accelerations, Stage::body_loads, Stage::bodies})
     EXPECT_TRUE(has(plan, s)) << stage_name(s);
   for (Stage s : {Stage::turbulence, Stage::moving_walls, Stage::wall_positions, Stage::shifting,
-                  Stage::probes, Stage::wall_shear})
+                  Stage::probes, Stage::wall_shear, Stage::prescribed_bodies})
     EXPECT_FALSE(has(plan, s)) << stage_name(s);
+  // Only a body with a prescribed motion brings the stage that sets its velocities.
+  f.prescribed_bodies = true;
+  EXPECT_TRUE(has(compose_step(f), Stage::prescribed_bodies));
 }
 
 TEST(StepPlan, LoadsAreTakenBeforeTheFluidMovesAndChecksAfterTheClock) {
