@@ -49,6 +49,17 @@ BodySummary summarize_body(const BodyTrack& track, const Vec3& gravity,
   const Vec3 x0 = row3(track.position, 0);
   const double angle0 = track.angle.empty() ? 0.0 : track.angle[0];
 
+  std::vector<double> magnitude(n);
+  for (std::size_t k = 0; k < n; ++k) magnitude[k] = row3(track.force_fluid, k).norm();
+  // A one-step spike stands above spike_weights W and above spike_ratio times both neighbours.
+  const auto spike = [&](std::size_t k) {
+    if (!(settings.spike_weights > 0) || !(magnitude[k] > settings.spike_weights * s.weight))
+      return false;
+    const double before = k > 0 ? magnitude[k - 1] : 0.0;
+    const double after = k + 1 < n ? magnitude[k + 1] : 0.0;
+    return magnitude[k] > settings.spike_ratio * std::max(before, after);
+  };
+
   bool carried = false;
   std::size_t release_start = n;  // first row of the current run of released rows
   for (std::size_t k = 0; k < n; ++k) {
@@ -57,12 +68,17 @@ BodySummary summarize_body(const BodyTrack& track, const Vec3& gravity,
     // The body is dry before the wave: the first load above 1 % of its weight is the wave.
     if (std::isnan(s.arrival_time) && ff.norm() > settings.arrival_fraction * s.weight)
       s.arrival_time = t;
-    if (std::abs(ff.x()) > std::abs(s.peak_force_horizontal)) {
+    const bool is_spike = spike(k);
+    if (is_spike) {
+      ++s.load_spikes;
+      if (magnitude[k] > s.largest_spike) s.largest_spike = magnitude[k], s.largest_spike_time = t;
+    }
+    if (!is_spike && std::abs(ff.x()) > std::abs(s.peak_force_horizontal)) {
       s.peak_force_horizontal = ff.x();
       s.peak_force_horizontal_time = t;
     }
     const double fv = ff.dot(up);
-    if (std::abs(fv) > std::abs(s.peak_force_vertical)) {
+    if (!is_spike && std::abs(fv) > std::abs(s.peak_force_vertical)) {
       s.peak_force_vertical = fv;
       s.peak_force_vertical_time = t;
     }
@@ -154,7 +170,10 @@ void store_body_summary(const std::string& h5_path, const std::string& body, con
         {"peak_force_vertical", s.peak_force_vertical},
         {"peak_force_vertical_time", s.peak_force_vertical_time},
         {"peak_angle", s.peak_angle},
-        {"peak_angle_time", s.peak_angle_time}};
+        {"peak_angle_time", s.peak_angle_time},
+        {"load_spikes", static_cast<double>(s.load_spikes)},
+        {"largest_spike", s.largest_spike},
+        {"largest_spike_time", s.largest_spike_time}};
     for (const auto& [name, value] : scalars) write_double_attribute(group, name, &value, 1, where);
     write_double_attribute(group, "final_displacement", s.displacement.data(), 3, where);
   } catch (...) {
@@ -181,6 +200,14 @@ std::string format_body_summary(const BodyTrack& track, const BodySummary& s) {
                 s.displacement[0], s.displacement[1], s.displacement[2],
                 s.peak_angle * 180.0 / M_PI, when(s.peak_angle_time).c_str());
   o << b;
+  if (s.load_spikes > 0) {
+    std::snprintf(b, sizeof b,
+                  "; %d one-step load spike%s left out of the peaks (largest %.4g %s = %.0f W, %s)",
+                  s.load_spikes, s.load_spikes == 1 ? "" : "s", s.largest_spike, unit,
+                  s.weight > 0 ? s.largest_spike / s.weight : 0.0,
+                  when(s.largest_spike_time).c_str());
+    o << b;
+  }
   return o.str();
 }
 

@@ -33,6 +33,11 @@ struct BodyReportSettings {
   double carried_fraction = 0.5;    // the support carried the body: upward contact >= 0.5 W
   double released_fraction = 0.01;  // ... and no longer: |vertical contact| < 0.01 W
   double release_hold = 0.05;       // s the contact must stay released to count as leaving
+  // A load spike: a fluid force above spike_weights W that stands alone, more than spike_ratio
+  // times the force of both neighbouring steps (the water under a landing body stopped in one
+  // step: its size grows as 1/dt, docs/stability.md). It is counted and left out of the peaks.
+  double spike_weights = 10.0;  // 0: every load counts in the peaks
+  double spike_ratio = 2.0;
 };
 
 constexpr double kNotFound = std::numeric_limits<double>::quiet_NaN();
@@ -48,6 +53,9 @@ struct BodySummary {
   std::array<double, 3> displacement{};  // last row minus first row, m
   double peak_angle = 0.0;               // angle - angle(first row) of largest magnitude, rad
   double peak_angle_time = kNotFound;
+  int load_spikes = 0;         // one-step spikes left out of the peak forces
+  double largest_spike = 0.0;  // |F_fluid| of the largest of them
+  double largest_spike_time = kNotFound;
 };
 
 BodySummary summarize_body(const BodyTrack& track, const Vec3& gravity,

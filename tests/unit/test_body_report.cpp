@@ -95,6 +95,32 @@ TEST(BodyReport, FindsTheKnownTimesAndPeaks) {
   EXPECT_NEAR(s.peak_angle_time, 1.0, 1e-9);
 }
 
+// A load that lasts one step only, above 10 W and twice both neighbours (the water under a
+// landing body stopped in one step), is counted as a spike and left out of the peaks; the same
+// load held for two steps is a load and stays in them; spike_weights = 0 keeps every load.
+TEST(BodyReport, OneStepSpikesAreFlaggedNotKeptInThePeaks) {
+  cli::BodyTrack t = synthetic_track();
+  t.force_fluid[3 * 1200 + 2] = 500.0;  // 25 W for one step at t = 1.201 s
+  cli::BodySummary s = cli::summarize_body(t, kGravity);
+  std::printf("%s\n", cli::format_body_summary(t, s).c_str());
+  EXPECT_EQ(s.load_spikes, 1);
+  EXPECT_NEAR(s.largest_spike, 500.0, 1e-9);
+  EXPECT_NEAR(s.largest_spike_time, row_time(1200), 1e-12);
+  EXPECT_NEAR(s.peak_force_vertical, -40.0, 0.1);  // the pulse at 0.6 s, as without the spike
+  EXPECT_NE(cli::format_body_summary(t, s).find("1 one-step load spike left out"),
+            std::string::npos);
+  t.force_fluid[3 * 1201 + 2] = 500.0;  // held for a second step: a real load
+  s = cli::summarize_body(t, kGravity);
+  EXPECT_EQ(s.load_spikes, 0);
+  EXPECT_NEAR(s.peak_force_vertical, 500.0, 1e-9);
+  t.force_fluid[3 * 1201 + 2] = 0.0;
+  cli::BodyReportSettings keep_all;
+  keep_all.spike_weights = 0;
+  s = cli::summarize_body(t, kGravity, keep_all);
+  EXPECT_EQ(s.load_spikes, 0);
+  EXPECT_NEAR(s.peak_force_vertical, 500.0, 1e-9);
+}
+
 TEST(BodyReport, ABodyNeverReachedNorReleasedHasNoTimes) {
   cli::BodyTrack track = synthetic_track();
   for (auto& f : track.force_fluid) f = 0.0;
