@@ -12,7 +12,7 @@ mode="${1:-run}"
 shift || true
 
 packages=(build-essential cmake pkg-config git
-          liblua5.4-dev libeigen3-dev libsuitesparse-dev libhdf5-dev
+          liblua5.4-dev libeigen3-dev libsuitesparse-dev libhdf5-dev libhypre-dev
           libosmesa6-dev libpng-dev libgtest-dev clang-format
           python3 python3-matplotlib python3-h5py python3-numpy)
 

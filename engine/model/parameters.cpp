@@ -87,10 +87,13 @@ const std::vector<ParameterInfo>& ParameterSet::engine_table() {
       {"smagorinsky_constant", "-", "C_s of the Smagorinsky model (nu_t = (C_s d0)^2 |S|)", 0.12},
       {"solver", "-",
        "pressure solver: \"cholmod\" (direct), \"pcg\" (Jacobi-preconditioned CG, warm-started), "
+       "\"pcg_amg\" (CG preconditioned by a BoomerAMG V-cycle, warm-started), "
        "\"auto\" (cholmod up to 60000 unknowns in 2D, pcg otherwise)",
        std::string("auto")},
-      {"solver_tolerance", "-", "relative residual |b - Ax| / |b| at which pcg stops", 1.0e-8},
-      {"solver_max_iterations", "-", "pcg iteration limit; reaching it stops the run", 5000.0},
+      {"solver_tolerance", "-", "relative residual |b - Ax| / |b| at which pcg and pcg_amg stop",
+       1.0e-8},
+      {"solver_max_iterations", "-", "pcg and pcg_amg iteration limit; reaching it stops the run",
+       5000.0},
       {"pressure_gradient", "-",
        "corrector gradient: \"symmetric\" (momentum-conserving) or \"difference\"",
        std::string("symmetric")},
@@ -332,7 +335,7 @@ SimulationParameters SimulationParameters::from(const ParameterSet& set) {
   p.wall_layers = integer("wall_layers", non_negative("wall_layers"));
   p.turbulence = one_of("turbulence", {"none", "smagorinsky"});
   p.smagorinsky_constant = non_negative("smagorinsky_constant");
-  p.solver = one_of("solver", {"auto", "cholmod", "pcg"});
+  p.solver = one_of("solver", {"auto", "cholmod", "pcg", "pcg_amg"});
   p.solver_tolerance = positive("solver_tolerance");
   p.solver_max_iterations = integer("solver_max_iterations", positive("solver_max_iterations"));
   p.pressure_gradient = one_of("pressure_gradient", {"symmetric", "difference"});

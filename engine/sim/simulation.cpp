@@ -132,9 +132,6 @@ Simulation::Simulation(Model model)
   // Modes resolved once from the parameters, and the step composed from what the scene uses.
   ghost_surface_ = prm.surface_pressure == "ghost";
   symmetric_gradient_ = prm.pressure_gradient == "symmetric";
-  solver_choice_ = prm.solver == "cholmod" ? SolverChoice::cholmod
-                   : prm.solver == "pcg"   ? SolverChoice::pcg
-                                           : SolverChoice::automatic;
   SceneFeatures features;
   features.bodies = bodies_ != nullptr;
   for (std::size_t b = 0; bodies_ && b < bodies_->size(); ++b)
@@ -336,13 +333,9 @@ void Simulation::run_stage(Stage stage, StepInProgress& now) {
 
 void Simulation::solve_pressure(StepInProgress& now) {
   const auto& prm = model_.params;
-  const bool direct =
-      solver_choice_ == SolverChoice::cholmod ||
-      (solver_choice_ == SolverChoice::automatic && prm.dim == 2 && now.ppe.unknowns <= 60000);
-  const char* wanted = direct ? "cholmod" : "pcg";
+  const std::string wanted = resolve_solver(prm.solver, prm.dim, now.ppe.unknowns);
   if (!solver_ || solver_->name() != wanted)
-    solver_ = direct ? make_cholmod_solver()
-                     : make_pcg_solver(prm.solver_tolerance, prm.solver_max_iterations);
+    solver_ = make_solver(wanted, prm.solver_tolerance, prm.solver_max_iterations);
   gather_pressure_guess(particles_, work_);
   SolveReport solve;
   try {

@@ -173,7 +173,6 @@ class Simulation {
   StageTimer timer_;
   // The step composed from the scene (step_plan.hpp) and the modes it runs in.
   std::vector<Stage> plan_;
-  enum class SolverChoice { automatic, cholmod, pcg } solver_choice_ = SolverChoice::automatic;
   bool ghost_surface_ = true, symmetric_gradient_ = true;
   double time_ = 0.0;
   long step_ = 0;

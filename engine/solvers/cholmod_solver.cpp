@@ -3,9 +3,12 @@
 // the factor is kept for further right-hand sides (solve_again).
 #include <cholmod.h>
 
+#include <algorithm>
+#include <chrono>
 #include <cstring>
 
 #include "engine/solvers/linear_solver.hpp"
+#include "engine/solvers/solver_counters.hpp"
 
 namespace washout {
 namespace {
@@ -42,8 +45,18 @@ class CholmodSolver final : public LinearSolver {
       idx[k] = A.column[k];
       val[k] = A.value[k];
     }
+    const auto start = std::chrono::steady_clock::now();
+    const double cpu_start = thread_cpu_seconds();
     factor_ = cholmod_l_analyze(M, &common_);
     cholmod_l_factorize(M, factor_, &common_);
+    auto& counters = solver_counters();
+    ++counters.setups;
+    counters.setup_seconds +=
+        std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+    counters.setup_cpu_seconds += thread_cpu_seconds() - cpu_start;
+    // The factor's non-zeros, each a value and a row index.
+    counters.setup_bytes = std::max(
+        counters.setup_bytes, common_.lnz * double(sizeof(double) + sizeof(SuiteSparse_long)));
     const bool positive = common_.status == CHOLMOD_OK && factor_->minor >= n;
     cholmod_l_free_sparse(&M, &common_);
     if (!positive) {

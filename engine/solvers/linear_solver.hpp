@@ -36,8 +36,37 @@ class LinearSolver {
   }
 };
 
+// BoomerAMG's settings (hypre's codes; docs/performance.md says how they were chosen).
+struct AmgOptions {
+  // Solves one set-up serves while the matrix keeps its size (1: a set-up for every matrix);
+  // a new set-up comes sooner when a solve takes more than stale_growth times the iterations
+  // of the first solve after the set-up (plus two).
+  int reuse_solves = 1;
+  double stale_growth = 1.5;
+  double strong_threshold = 0.5;  // a connection is strong above this share of the largest
+  int coarsening = 10;            // HMIS
+  int interpolation = 6;          // extended+i
+  int max_interpolation_entries = 4;
+  int aggressive_levels = 1;  // levels coarsened aggressively (fewer, cheaper levels)
+  // Smoothers going down and coming up the V-cycle: forward then backward l1-Gauss-Seidel (13,
+  // 14) make the cycle symmetric, as CG needs, with one sweep each way.
+  int relax_down = 13, relax_up = 14;
+};
+
 std::unique_ptr<LinearSolver> make_cholmod_solver();
 std::unique_ptr<LinearSolver> make_pcg_solver(double tolerance, int max_iterations);
+std::unique_ptr<LinearSolver> make_amg_pcg_solver(double tolerance, int max_iterations,
+                                                  const AmgOptions& options = {});
+
+// The solver a run uses, by the `solver` parameter: "cholmod", "pcg", "pcg_amg", or "auto",
+// resolved by the dimension and the number of unknowns (docs/parameters.md).
+std::string resolve_solver(const std::string& requested, int dim, std::size_t unknowns);
+// The BoomerAMG settings make_solver gives "pcg_amg": AmgOptions{} unless a benchmark changed
+// them (bench_case --amg-reuse).
+AmgOptions& default_amg_options();
+// A solver by resolved name, counted in solver_counters() (solver_counters.hpp).
+std::unique_ptr<LinearSolver> make_solver(const std::string& name, double tolerance,
+                                          int max_iterations);
 
 double relative_residual(const CsrMatrix& A, const std::vector<double>& b,
                          const std::vector<double>& x);

@@ -1,9 +1,16 @@
-// Preconditioned conjugate gradient with a Jacobi (diagonal) preconditioner, warm-started from
-// the caller's guess (the previous step's pressure). Dot products are summed in fixed blocks so
-// that the result does not depend on the thread count's scheduling.
+// Preconditioned conjugate gradient, warm-started from the caller's guess (the previous step's
+// pressure), with a preconditioner chosen by name: Jacobi (the diagonal, "pcg") or one
+// BoomerAMG V-cycle ("pcg_amg", hypre_amg.cpp). The loop is the same for both, so the stopping
+// test |b - A x| / |b| <= tolerance means the same thing whichever preconditions. Dot products
+// are summed in fixed blocks so that the result does not depend on the thread count's
+// scheduling.
+#include <algorithm>
+#include <chrono>
 #include <cmath>
 
 #include "engine/solvers/linear_solver.hpp"
+#include "engine/solvers/preconditioner.hpp"
+#include "engine/solvers/solver_counters.hpp"
 
 namespace washout {
 namespace {
@@ -13,86 +20,153 @@ constexpr std::size_t kBlock = 4096;
 // (and waiting at barriers when another process holds a core) would cost far more.
 constexpr std::size_t kParallelRows = 20000;
 
-double dot(const std::vector<double>& a, const std::vector<double>& b) {
-  const std::size_t n = a.size(), blocks = (n + kBlock - 1) / kBlock;
-  std::vector<double> partial(blocks, 0.0);
-#pragma omp parallel for schedule(static) if (n > kParallelRows)
-  for (std::size_t k = 0; k < blocks; ++k) {
-    double s = 0.0;
-    const std::size_t end = std::min(n, (k + 1) * kBlock);
-    for (std::size_t i = k * kBlock; i < end; ++i) s += a[i] * b[i];
-    partial[k] = s;
-  }
-  double s = 0.0;
-  for (double p : partial) s += p;
-  return s;
+double seconds_since(std::chrono::steady_clock::time_point start) {
+  return std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
 }
 
-class PcgSolver final : public LinearSolver {
- public:
-  PcgSolver(double tolerance, int max_iterations)
-      : tolerance_(tolerance), max_iterations_(max_iterations) {}
-  std::string name() const override { return "pcg"; }
+// Both sums a.b and a.c in one pass, each over the same fixed blocks.
+std::pair<double, double> dots(const std::vector<double>& a, const std::vector<double>& b,
+                               const std::vector<double>& c) {
+  const std::size_t n = a.size(), blocks = (n + kBlock - 1) / kBlock;
+  std::vector<double> partial_b(blocks, 0.0), partial_c(blocks, 0.0);
+#pragma omp parallel for schedule(static) if (n > kParallelRows)
+  for (std::size_t k = 0; k < blocks; ++k) {
+    double sb = 0.0, sc = 0.0;
+    const std::size_t end = std::min(n, (k + 1) * kBlock);
+    for (std::size_t i = k * kBlock; i < end; ++i) {
+      sb += a[i] * b[i];
+      sc += a[i] * c[i];
+    }
+    partial_b[k] = sb;
+    partial_c[k] = sc;
+  }
+  double sb = 0.0, sc = 0.0;
+  for (std::size_t k = 0; k < blocks; ++k) {
+    sb += partial_b[k];
+    sc += partial_c[k];
+  }
+  return {sb, sc};
+}
 
-  SolveReport solve(const CsrMatrix& A, const std::vector<double>& b,
-                    std::vector<double>& x) override {
+double dot(const std::vector<double>& a, const std::vector<double>& b) {
+  return dots(a, b, b).first;
+}
+
+class JacobiPreconditioner final : public Preconditioner {
+ public:
+  void prepare(const CsrMatrix& A, bool same_matrix) override {
+    if (same_matrix && inverse_diagonal_.size() == A.rows) return;
     const std::size_t n = A.rows;
-    x.resize(n, 0.0);
     inverse_diagonal_.assign(n, 1.0);
 #pragma omp parallel for schedule(static) if (n > kParallelRows)
     for (std::size_t i = 0; i < n; ++i)
       for (std::int64_t k = A.row_start[i]; k < A.row_start[i + 1]; ++k)
         if (static_cast<std::size_t>(A.column[k]) == i && A.value[k] != 0.0)
           inverse_diagonal_[i] = 1.0 / A.value[k];
+    auto& counters = solver_counters();
+    counters.setup_bytes = std::max(counters.setup_bytes, double(n * sizeof(double)));
+  }
+  void apply(const std::vector<double>& r, std::vector<double>& z) override {
+    const std::size_t n = r.size();
+    z.resize(n);
+#pragma omp parallel for schedule(static) if (n > kParallelRows)
+    for (std::size_t i = 0; i < n; ++i) z[i] = inverse_diagonal_[i] * r[i];
+  }
 
+ private:
+  std::vector<double> inverse_diagonal_;
+};
+
+class PcgSolver final : public LinearSolver {
+ public:
+  PcgSolver(std::string name, std::unique_ptr<Preconditioner> preconditioner, double tolerance,
+            int max_iterations)
+      : name_(std::move(name)),
+        preconditioner_(std::move(preconditioner)),
+        tolerance_(tolerance),
+        max_iterations_(max_iterations) {}
+  std::string name() const override { return name_; }
+
+  SolveReport solve(const CsrMatrix& A, const std::vector<double>& b,
+                    std::vector<double>& x) override {
+    return iterate(A, b, x, false);
+  }
+  SolveReport solve_again(const CsrMatrix& A, const std::vector<double>& b,
+                          std::vector<double>& x) override {
+    return iterate(A, b, x, true);
+  }
+
+ private:
+  void multiply(const CsrMatrix& A, const std::vector<double>& v, std::vector<double>& out) {
+    const auto start = std::chrono::steady_clock::now();
+    A.multiply(v, out);
+    auto& c = solver_counters();
+    c.product_seconds += seconds_since(start);
+    c.product_bytes += csr_product_bytes(A);
+    ++c.products;
+  }
+  void precondition(const std::vector<double>& r, std::vector<double>& z) {
+    const auto start = std::chrono::steady_clock::now();
+    preconditioner_->apply(r, z);
+    solver_counters().preconditioner_seconds += seconds_since(start);
+  }
+
+  SolveReport iterate(const CsrMatrix& A, const std::vector<double>& b, std::vector<double>& x,
+                      bool same_matrix) {
+    const std::size_t n = A.rows;
+    x.resize(n, 0.0);
     SolveReport report;
     const double b_norm = std::sqrt(dot(b, b));
     if (n == 0 || b_norm == 0.0) {
       std::fill(x.begin(), x.end(), 0.0);
       return report;
     }
+    preconditioner_->prepare(A, same_matrix);
     r_.resize(n);
-    z_.resize(n);
-    A.multiply(x, q_);
+    multiply(A, x, q_);
 #pragma omp parallel for schedule(static) if (n > kParallelRows)
-    for (std::size_t i = 0; i < n; ++i) {
-      r_[i] = b[i] - q_[i];
-      z_[i] = inverse_diagonal_[i] * r_[i];
-    }
+    for (std::size_t i = 0; i < n; ++i) r_[i] = b[i] - q_[i];
+    precondition(r_, z_);
     p_ = z_;
-    double rz = dot(r_, z_);
-    double r_norm = std::sqrt(dot(r_, r_));
+    auto [rz, rr] = dots(r_, z_, r_);
+    double r_norm = std::sqrt(rr);
     int it = 0;
     while (r_norm > tolerance_ * b_norm && it < max_iterations_) {
-      A.multiply(p_, q_);
+      multiply(A, p_, q_);
       const double step = rz / dot(p_, q_);
 #pragma omp parallel for schedule(static) if (n > kParallelRows)
       for (std::size_t i = 0; i < n; ++i) {
         x[i] += step * p_[i];
         r_[i] -= step * q_[i];
-        z_[i] = inverse_diagonal_[i] * r_[i];
       }
-      const double rz_new = dot(r_, z_);
+      precondition(r_, z_);
+      const auto [rz_new, rr_new] = dots(r_, z_, r_);
       const double beta = rz_new / rz;
       rz = rz_new;
 #pragma omp parallel for schedule(static) if (n > kParallelRows)
       for (std::size_t i = 0; i < n; ++i) p_[i] = z_[i] + beta * p_[i];
-      r_norm = std::sqrt(dot(r_, r_));
+      r_norm = std::sqrt(rr_new);
       ++it;
     }
+    preconditioner_->solved(it);
     report.iterations = it;
     report.relative_residual = r_norm / b_norm;
     report.converged = r_norm <= tolerance_ * b_norm;
     return report;
   }
 
- private:
+  std::string name_;
+  std::unique_ptr<Preconditioner> preconditioner_;
   double tolerance_;
   int max_iterations_;
-  std::vector<double> inverse_diagonal_, r_, z_, p_, q_;
+  std::vector<double> r_, z_, p_, q_;
 };
 
 }  // namespace
+
+std::unique_ptr<Preconditioner> make_jacobi_preconditioner() {
+  return std::make_unique<JacobiPreconditioner>();
+}
 
 double relative_residual(const CsrMatrix& A, const std::vector<double>& b,
                          const std::vector<double>& x) {
@@ -107,7 +181,14 @@ double relative_residual(const CsrMatrix& A, const std::vector<double>& b,
 }
 
 std::unique_ptr<LinearSolver> make_pcg_solver(double tolerance, int max_iterations) {
-  return std::make_unique<PcgSolver>(tolerance, max_iterations);
+  return std::make_unique<PcgSolver>("pcg", make_jacobi_preconditioner(), tolerance,
+                                     max_iterations);
+}
+
+std::unique_ptr<LinearSolver> make_amg_pcg_solver(double tolerance, int max_iterations,
+                                                  const AmgOptions& options) {
+  return std::make_unique<PcgSolver>("pcg_amg", make_boomeramg_preconditioner(options), tolerance,
+                                     max_iterations);
 }
 
 }  // namespace washout

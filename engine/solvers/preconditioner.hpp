@@ -1,0 +1,28 @@
+#pragma once
+// The preconditioners of the conjugate gradient solver (pcg_solver.cpp): M ~ A, symmetric
+// positive definite, applied as z = M^-1 r once per iteration. Jacobi (the diagonal) is built
+// here; BoomerAMG (hypre_amg.cpp) is one algebraic multigrid V-cycle.
+#include <memory>
+#include <vector>
+
+#include "engine/solvers/linear_solver.hpp"
+#include "engine/solvers/sparse_matrix.hpp"
+
+namespace washout {
+
+class Preconditioner {
+ public:
+  virtual ~Preconditioner() = default;
+  // Called before each solve with its matrix. same_matrix: A is the matrix of the last call,
+  // unchanged (LinearSolver::solve_again), so whatever was built for it still holds.
+  virtual void prepare(const CsrMatrix& A, bool same_matrix) = 0;
+  virtual void apply(const std::vector<double>& r, std::vector<double>& z) = 0;  // z = M^-1 r
+  // After each solve: the iterations it took (a preconditioner that has gone stale can tell).
+  virtual void solved(int /*iterations*/) {}
+};
+
+std::unique_ptr<Preconditioner> make_jacobi_preconditioner();
+// One BoomerAMG V-cycle (hypre), options in linear_solver.hpp.
+std::unique_ptr<Preconditioner> make_boomeramg_preconditioner(const AmgOptions& options);
+
+}  // namespace washout

@@ -1,0 +1,79 @@
+// The solver by name, and the counters every solve adds to (solver_counters.hpp).
+#include <chrono>
+#include <ctime>
+
+#include "engine/solvers/linear_solver.hpp"
+#include "engine/solvers/solver_counters.hpp"
+
+namespace washout {
+namespace {
+
+SolverCounters counters;
+AmgOptions amg_options;
+SystemObserver observer;
+
+// Counts what its solver does: solves, iterations, size and time.
+class CountedSolver final : public LinearSolver {
+ public:
+  explicit CountedSolver(std::unique_ptr<LinearSolver> inner) : inner_(std::move(inner)) {}
+  std::string name() const override { return inner_->name(); }
+  SolveReport solve(const CsrMatrix& A, const std::vector<double>& b,
+                    std::vector<double>& x) override {
+    if (observer) observer(A, b, x);
+    return count(A, [&] { return inner_->solve(A, b, x); });
+  }
+  SolveReport solve_again(const CsrMatrix& A, const std::vector<double>& b,
+                          std::vector<double>& x) override {
+    return count(A, [&] { return inner_->solve_again(A, b, x); });
+  }
+
+ private:
+  template <class Solve>
+  SolveReport count(const CsrMatrix& A, Solve solve) {
+    const auto start = std::chrono::steady_clock::now();
+    const SolveReport report = solve();
+    counters.solve_seconds +=
+        std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+    ++counters.solves;
+    counters.solver = inner_->name();
+    counters.iterations += report.iterations;
+    counters.rows += double(A.rows);
+    counters.nonzeros += double(A.nonzeros());
+    return report;
+  }
+  std::unique_ptr<LinearSolver> inner_;
+};
+
+}  // namespace
+
+SolverCounters& solver_counters() { return counters; }
+AmgOptions& default_amg_options() { return amg_options; }
+
+double thread_cpu_seconds() {
+  timespec t{};
+  clock_gettime(CLOCK_THREAD_CPUTIME_ID, &t);
+  return double(t.tv_sec) + 1e-9 * double(t.tv_nsec);
+}
+void set_system_observer(SystemObserver o) { observer = std::move(o); }
+const SystemObserver& system_observer() { return observer; }
+
+std::string resolve_solver(const std::string& requested, int dim, std::size_t unknowns) {
+  if (requested != "auto") return requested;
+  return dim == 2 && unknowns <= 60000 ? "cholmod" : "pcg";
+}
+
+std::unique_ptr<LinearSolver> make_solver(const std::string& name, double tolerance,
+                                          int max_iterations) {
+  std::unique_ptr<LinearSolver> solver;
+  if (name == "cholmod")
+    solver = make_cholmod_solver();
+  else if (name == "pcg")
+    solver = make_pcg_solver(tolerance, max_iterations);
+  else if (name == "pcg_amg")
+    solver = make_amg_pcg_solver(tolerance, max_iterations, amg_options);
+  else
+    throw SolverError("unknown pressure solver '" + name + "' (cholmod, pcg, pcg_amg, auto)");
+  return std::make_unique<CountedSolver>(std::move(solver));
+}
+
+}  // namespace washout

@@ -1,0 +1,160 @@
+// The pressure solvers behind make_solver: the multigrid-preconditioned CG (BoomerAMG) against
+// Jacobi CG on Poisson matrices of growing size, the reuse of a set-up across solves, the
+// counters the benchmark reads, and the errors a wrong matrix or name gives.
+#include <gtest/gtest.h>
+
+#include <cmath>
+
+#include "engine/solvers/linear_solver.hpp"
+#include "engine/solvers/solver_counters.hpp"
+
+namespace washout {
+namespace {
+
+// -lap u = f on an n^3 grid, Dirichlet outside, seven-point stencil scaled by `scale` (the PPE
+// is a scaled Laplacian too); the diagonal is stored in the middle of each row, as the PPE
+// assembly does not put it first.
+CsrMatrix laplacian_3d(int n, double scale = 1.0) {
+  CsrMatrix A;
+  A.rows = std::size_t(n) * n * n;
+  A.row_start.push_back(0);
+  auto index = [n](int i, int j, int k) { return std::int32_t((k * n + j) * n + i); };
+  for (int k = 0; k < n; ++k)
+    for (int j = 0; j < n; ++j)
+      for (int i = 0; i < n; ++i) {
+        auto add = [&](int ii, int jj, int kk, double v) {
+          if (ii < 0 || jj < 0 || kk < 0 || ii >= n || jj >= n || kk >= n) return;
+          A.column.push_back(index(ii, jj, kk));
+          A.value.push_back(v * scale);
+        };
+        add(i, j, k - 1, -1);
+        add(i, j - 1, k, -1);
+        add(i - 1, j, k, -1);
+        add(i, j, k, 6);
+        add(i + 1, j, k, -1);
+        add(i, j + 1, k, -1);
+        add(i, j, k + 1, -1);
+        A.row_start.push_back(std::int64_t(A.value.size()));
+      }
+  return A;
+}
+
+std::vector<double> smooth_rhs(std::size_t rows) {
+  std::vector<double> b(rows);
+  for (std::size_t i = 0; i < rows; ++i) b[i] = 1.0 + std::sin(0.01 * double(i));
+  return b;
+}
+
+int iterations(LinearSolver& solver, const CsrMatrix& A) {
+  const auto b = smooth_rhs(A.rows);
+  std::vector<double> x(A.rows, 0.0);
+  const auto report = solver.solve(A, b, x);
+  EXPECT_TRUE(report.converged);
+  EXPECT_LT(relative_residual(A, b, x), 1e-8);
+  return report.iterations;
+}
+
+TEST(PressureSolvers, AmgIterationsStayFlatWhereJacobiGrows) {
+  // From 12^3 to 36^3 unknowns (27 times as many): Jacobi's iterations grow about with n, the
+  // V-cycle's must not.
+  auto jacobi = make_solver("pcg", 1e-8, 10000);
+  auto amg = make_solver("pcg_amg", 1e-8, 10000);
+  const int jacobi_small = iterations(*jacobi, laplacian_3d(12));
+  const int jacobi_large = iterations(*jacobi, laplacian_3d(36));
+  const int amg_small = iterations(*amg, laplacian_3d(12));
+  const int amg_large = iterations(*amg, laplacian_3d(36));
+  std::printf("Jacobi CG %d -> %d iterations, AMG CG %d -> %d\n", jacobi_small, jacobi_large,
+              amg_small, amg_large);
+  EXPECT_GT(jacobi_large, 2 * jacobi_small);
+  EXPECT_LE(amg_large, 1.5 * amg_small + 1);
+  EXPECT_LT(amg_large, jacobi_large / 3);
+}
+
+TEST(PressureSolvers, AmgSetupServesLaterMatricesOfTheSameSize) {
+  AmgOptions options;
+  options.reuse_solves = 3;
+  auto solver = make_amg_pcg_solver(1e-8, 1000, options);
+  auto& counters = solver_counters();
+  counters = SolverCounters{};
+  // Three matrices of one size (the scale changes, as the PPE's does with dt), then another size.
+  for (double scale : {1.0, 1.3, 0.7}) {
+    const CsrMatrix A = laplacian_3d(16, scale);
+    const auto b = smooth_rhs(A.rows);
+    std::vector<double> x(A.rows, 0.0);
+    EXPECT_TRUE(solver->solve(A, b, x).converged);
+    EXPECT_LT(relative_residual(A, b, x), 1e-8) << "scale " << scale;
+  }
+  EXPECT_EQ(counters.setups, 1);
+  const CsrMatrix other = laplacian_3d(17);
+  std::vector<double> x(other.rows, 0.0);
+  EXPECT_TRUE(solver->solve(other, smooth_rhs(other.rows), x).converged);
+  EXPECT_EQ(counters.setups, 2);
+  // Another right-hand side for the same matrix: no set-up.
+  EXPECT_TRUE(solver->solve_again(other, smooth_rhs(other.rows), x).converged);
+  EXPECT_EQ(counters.setups, 2);
+  EXPECT_GT(counters.operator_complexity, 1.0);
+  EXPECT_GT(counters.setup_bytes, 0.0);
+}
+
+TEST(PressureSolvers, CountersFollowTheKrylovLoop) {
+  auto solver = make_solver("pcg", 1e-8, 1000);
+  auto& counters = solver_counters();
+  counters = SolverCounters{};
+  const CsrMatrix A = laplacian_3d(10);
+  std::vector<double> x(A.rows, 0.0);
+  const auto report = solver->solve(A, smooth_rhs(A.rows), x);
+  EXPECT_EQ(counters.solves, 1);
+  EXPECT_EQ(counters.solver, "pcg");
+  EXPECT_EQ(counters.iterations, report.iterations);
+  EXPECT_EQ(counters.products, report.iterations + 1);  // one for the initial residual
+  EXPECT_DOUBLE_EQ(counters.product_bytes, counters.products * csr_product_bytes(A));
+  EXPECT_DOUBLE_EQ(counters.nonzeros, double(A.nonzeros()));
+}
+
+TEST(PressureSolvers, ObserverSeesEachSystemBeforeItIsSolved) {
+  auto solver = make_solver("pcg", 1e-8, 1000);
+  std::size_t seen_rows = 0;
+  double seen_guess = -1.0;
+  set_system_observer(
+      [&](const CsrMatrix& A, const std::vector<double>&, const std::vector<double>& x) {
+        seen_rows = A.rows;
+        seen_guess = x[0];
+      });
+  const CsrMatrix A = laplacian_3d(5);
+  std::vector<double> x(A.rows, 0.25);
+  solver->solve(A, smooth_rhs(A.rows), x);
+  set_system_observer(nullptr);
+  EXPECT_EQ(seen_rows, A.rows);
+  EXPECT_EQ(seen_guess, 0.25);  // the guess, not the solution
+}
+
+TEST(PressureSolvers, AutoPicksByDimensionAndSize) {
+  EXPECT_EQ(resolve_solver("pcg", 2, 10), "pcg");
+  EXPECT_EQ(resolve_solver("auto", 2, 1000), "cholmod");
+  EXPECT_NE(resolve_solver("auto", 3, 1000000), "cholmod");
+  EXPECT_NE(resolve_solver("auto", 2, 1000000), "cholmod");
+}
+
+TEST(PressureSolvers, ClearErrors) {
+  try {
+    make_solver("multigrid", 1e-8, 100);
+    FAIL() << "an unknown solver name was accepted";
+  } catch (const SolverError& e) {
+    EXPECT_NE(std::string(e.what()).find("multigrid"), std::string::npos);
+  }
+  // A row without its diagonal entry cannot be handed to BoomerAMG.
+  CsrMatrix A = laplacian_3d(3);
+  for (std::int64_t k = A.row_start[4]; k < A.row_start[5]; ++k)
+    if (A.column[k] == 4) A.column[k] = 5;
+  auto solver = make_solver("pcg_amg", 1e-8, 100);
+  std::vector<double> x(A.rows, 0.0);
+  try {
+    solver->solve(A, smooth_rhs(A.rows), x);
+    FAIL() << "a matrix without a diagonal entry was accepted";
+  } catch (const SolverError& e) {
+    EXPECT_NE(std::string(e.what()).find("row 4"), std::string::npos) << e.what();
+  }
+}
+
+}  // namespace
+}  // namespace washout
