@@ -93,9 +93,10 @@ struct SimulationParameters {
   double shifting_with_speed = 2.0;
   double surface_smoothing = 0.5;
   double output_interval = 0.05;
-  double max_speed = 0.0;          // 0: automatic from gravity and domain size
-  double energy_gain_limit = 0.1;  // energy guard tolerance, a fraction of M g H; 0: off
-  std::string periodic;            // axes, e.g. "x"
+  double max_speed = 0.0;              // 0: automatic from gravity and domain size
+  double energy_gain_limit = 0.1;      // energy guard tolerance, a fraction of M g H; 0: off
+  double contact_overlap_limit = 0.5;  // contact guard: deepest overlap / d0; 0: off
+  std::string periodic;                // axes, e.g. "x"
   std::vector<double> domain_min, domain_max;
   int threads = 0;
   double max_particles = 5e7;  // refused above this estimate before allocating

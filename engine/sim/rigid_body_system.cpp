@@ -203,6 +203,31 @@ long RigidBodySystem::advance(double t, double dt, const Vec3& gravity, Particle
   return last_report_.substeps;
 }
 
+void RigidBodySystem::check_overlap(double max_overlap) const {
+  if (!(max_overlap > 0)) return;
+  // The contacts of the last sub-step's detection: the deepest of each kind.
+  const contact::WallCandidate* wall = nullptr;
+  for (const auto& c : workspace_.wall_candidates)
+    if (!wall || c.overlap > wall->overlap) wall = &c;
+  const contact::PairCandidate* pair = nullptr;
+  for (const auto& c : workspace_.pair_candidates)
+    if (!pair || c.overlap > pair->overlap) pair = &c;
+  std::ostringstream m;
+  m.precision(4);
+  if (wall && wall->overlap > max_overlap && (!pair || wall->overlap >= pair->overlap)) {
+    m << "body '" << name(wall->body) << "' overlaps wall '" << contact_.walls[wall->wall].name
+      << "' by " << wall->overlap << " m";
+  } else if (pair && pair->overlap > max_overlap) {
+    m << "bodies '" << name(pair->body_a) << "' and '" << name(pair->body_b) << "' overlap by "
+      << pair->overlap << " m";
+  } else {
+    return;
+  }
+  m << ", more than contact_overlap_limit allows (" << max_overlap
+    << " m): the contact is too soft for the load (raise E) or a body passed into a solid";
+  throw UnstableError(m.str());
+}
+
 Vec3 RigidBodySystem::reference_point(std::size_t b, const Vec3& x) const {
   const rigid::BodyState& s = states_[b];
   return s.orientation.conjugate() * (x - s.position) + models_[b].centre_of_mass;

@@ -65,6 +65,10 @@ class RigidBodySystem {
   // Every body from t to t + dt with contact sub-steps, then its particles. Returns the number
   // of sub-steps; throws UnstableError when a body's state blows up or sub-stepping fails.
   long advance(double t, double dt, const Vec3& gravity, Particles& p);
+  // The contact guard: throws UnstableError when, after the step, a body overlaps a wall or
+  // another body by more than max_overlap [m] (0: no check): the contact is too soft for the
+  // load or the step let a body pass through, and the loads that follow are not physical.
+  void check_overlap(double max_overlap) const;
   // Whether x lies inside body b's shape in its current pose.
   bool contains(std::size_t b, const Vec3& x) const;
   // Signed distance of world point x from body b's surface (negative inside).

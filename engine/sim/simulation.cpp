@@ -309,6 +309,7 @@ void Simulation::run_stage(Stage stage, StepInProgress& now) {
       return;
     case Stage::bodies:
       report.substeps = bodies_->advance(time_, dt, prm.gravity, particles_);
+      bodies_->check_overlap(prm.contact_overlap_limit * ctx_.d0);
       return;
     case Stage::clock:
       time_ = now.t_new;

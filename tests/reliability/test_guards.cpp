@@ -89,5 +89,22 @@ TEST(Guards, TimeStepBelowTheMinimumSaysWhichLimit) {
   EXPECT_NE(f.result.output.find("(set by the viscous limit)"), std::string::npos);
 }
 
+// A box dropped into water lands on the floor; with the overlap allowed at 1e-7 d0 (2e-9 m; the
+// default is half a spacing) the landing's contact overlap, 6.5e-6 m at E = 3e10 Pa, fires
+// the contact guard and names the body and the wall.
+TEST(Guards, ContactOverlapNamesBodyAndWall) {
+  const fs::path dir = fs::path(testing::TempDir()) / "guard_overlap";
+  fs::remove_all(dir);
+  fs::create_directories(dir);
+  Fired f;
+  f.result = test::run_washout(
+      {"run", std::string(WASHOUT_SOURCE_DIR) + "/scenes/stability/box_drop_2d.lua", "--out",
+       dir.string(), "--quiet", "--threads", "1", "--set", "d0=0.02", "--set",
+       "contact_overlap_limit=1e-7"},
+      (dir / "log.txt").string(), 120.0);
+  f.file = dir / "box_drop_2d.h5";
+  expect_fired(f, "body 'box' overlaps wall 'tank' by ");
+}
+
 }  // namespace
 }  // namespace washout
