@@ -116,19 +116,18 @@ const std::vector<ParameterInfo>& ParameterSet::engine_table() {
        0.5},
       {"output_interval", "s", "simulated time between output frames", 0.05},
       {"max_speed", "m/s", "a faster particle stops the run as unstable; 0 = 10 sqrt(2 g L)", 0.0},
+      {"energy_gain_limit", "-",
+       "the energy guard: a run whose mechanical energy (fluid and bodies, kinetic + potential) "
+       "exceeds its start plus the work moving walls and bodies can have done plus this "
+       "fraction of M_fluid g H stops as unstable (docs/stability.md); 0 = off",
+       0.1},
+      {"contact_overlap_limit", "-",
+       "the contact guard: a body overlapping a wall or another body by more than this "
+       "fraction of d0 after a step stops the run as unstable (docs/stability.md); 0 = off",
+       0.5},
       {"periodic", "-", "periodic axes, e.g. \"x\" (needs domain_min and domain_max)",
        std::string("")},
-      {"domain_min",
-       "m",
-       {"energy_gain_limit", "-",
-        "the energy guard: a run whose mechanical energy (fluid and bodies, kinetic + potential) "
-        "exceeds its start plus the work moving walls and bodies can have done plus this "
-        "fraction of M_fluid g H stops as unstable (docs/stability.md); 0 = off",
-        0.1},
-       {"contact_overlap_limit", "-",
-        "the contact guard: a body overlapping a wall or another body by more than this "
-        "fraction of d0 after a step stops the run as unstable (docs/stability.md); 0 = off",
-        0.5},
+      {"domain_min", "m",
        "lower corner of the domain; particles leaving it stop the run; "
        "empty = bounding box of the scene plus a margin",
        Vec{}},
@@ -363,11 +362,12 @@ SimulationParameters SimulationParameters::from(const ParameterSet& set) {
     }
   }
   p.max_speed = non_negative("max_speed");
+  p.energy_gain_limit = non_negative("energy_gain_limit");
+  p.contact_overlap_limit = non_negative("contact_overlap_limit");
   p.periodic = set.text("periodic");
   for (char c : p.periodic)
-    if (c != 'x' && c != 'y' && c != 'z') p.energy_gain_limit = non_negative("energy_gain_limit");
-  p.contact_overlap_limit = non_negative("contact_overlap_limit");
-  throw ParameterError("periodic", "parameter 'periodic' lists axes among x, y, z");
+    if (c != 'x' && c != 'y' && c != 'z')
+      throw ParameterError("periodic", "parameter 'periodic' lists axes among x, y, z");
   p.domain_min = set.vector("domain_min");
   p.domain_max = set.vector("domain_max");
   for (const auto* name : {"domain_min", "domain_max"}) {

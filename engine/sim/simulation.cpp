@@ -318,10 +318,10 @@ void Simulation::run_stage(Stage stage, StepInProgress& now) {
       report.time = time_;
       report.dt = dt;
       report.max_speed = max_speed_;
-      check_energy(report);
       return;
     case Stage::checks:
       check_health(report);
+      check_energy(report);
       return;
     case Stage::push_out:
       push_out_of_solids(report);

@@ -178,12 +178,12 @@ class Simulation {
   long step_ = 0;
   std::uint64_t layout_fingerprint_ = 0;
   double max_speed_ = 0.0;
+  double max_speed_limit_ = 0.0;
   // The energy guard (energy_budget.hpp): the fluid's height extent along gravity at the start
   // sets the scale M g H and the largest pressure the walls can meet.
   EnergyBudget energy_budget_;
   double fluid_height_ = 0.0;
   bool moving_boundaries_ = false;  // moving walls or bodies: the budget counts their work
-  double max_speed_limit_ = 0.0;
   Vec3 domain_lower_, domain_upper_;
   long wall_crossings_ = 0;
   long gap_relocations_ = 0;
