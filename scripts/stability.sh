@@ -4,6 +4,7 @@
 #   bash scripts/stability.sh            the full sweep (about an hour on two cores)
 #   bash scripts/stability.sh --quick    the envelope's corners only (about a minute), what CI runs
 #   options: --out DIR (default runs/stability), --threads N (each run; default 1),
+#            --only NAME,NAME (only these sweeps; their names are the report's sections),
 #            --report FILE (default docs/stability.md; the map is FILE's name with _map.png)
 # Uses the build in build/, the folder in WASHOUT_BUILD, or the program in WASHOUT.
 # Exit status: 0 when every run of the quick envelope completed (the full sweep exits 0 whatever
@@ -12,13 +13,14 @@
 set -euo pipefail
 here="$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)"
 cd "$here"
-mode=full out=runs/stability threads=1 report=""
+mode=full out=runs/stability threads=1 report="" only=""
 while [ $# -gt 0 ]; do
   case "$1" in
     --quick) mode=quick ;;
     --out) out="$2"; shift ;;
     --threads) threads="$2"; shift ;;
     --report) report="$2"; shift ;;
+    --only) only=",$2,"; shift ;;
     *) echo "stability.sh: unknown option '$1' (see the top of scripts/stability.sh)" >&2; exit 1 ;;
   esac
   shift
@@ -35,6 +37,7 @@ rm -f "$out"/sweeps.txt
 sweep() {
   local name="$1" what="$2" scene="$3"
   shift 3
+  if [ -n "$only" ] && [[ "$only" != *",$name,"* ]]; then return 0; fi
   echo "== $name: $what"
   "$washout" study "$scene" --out "$out/$name" --threads "$threads" "$@" > "$out/$name.log" 2>&1 ||
     { echo "stability.sh: the study '$name' could not run:"; tail -5 "$out/$name.log"; exit 1; }
