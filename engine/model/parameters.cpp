@@ -48,95 +48,102 @@ std::string json_escape(const std::string& s) {
 }  // namespace
 
 const std::vector<ParameterInfo>& ParameterSet::engine_table() {
+  // Every default is the one SimulationParameters holds: one home for each.
+  const SimulationParameters d;
   static const std::vector<ParameterInfo> table = {
-      {"dim", "-", "space dimension, 2 or 3", 2.0},
-      {"d0", "m", "initial particle spacing", 0.01},
-      {"h_over_d0", "-", "smoothing length h as a multiple of d0 (kernel support 2h)", 1.2},
-      {"rho0", "kg/m^3", "reference density of the fluid", 1000.0},
-      {"viscosity", "m^2/s", "kinematic viscosity nu", 1.0e-6},
+      {"dim", "-", "space dimension, 2 or 3", double(d.dim)},
+      {"d0", "m", "initial particle spacing", d.d0},
+      {"h_over_d0", "-", "smoothing length h as a multiple of d0 (kernel support 2h)", d.h_over_d0},
+      {"rho0", "kg/m^3", "reference density of the fluid", d.rho0},
+      {"viscosity", "m^2/s", "kinematic viscosity nu", d.viscosity},
       {"gravity", "m/s^2", "gravity vector; empty = {0,-9.81} in 2D, {0,0,-9.81} in 3D", Vec{}},
       {"alpha", "-",
        "relaxation of the density-invariance term in the PPE (0 divergence-free, 1 "
        "density-invariant); calibrated by the hydrostatic test, see docs/method.md",
-       0.05},
+       d.alpha},
       {"free_surface_threshold", "-",
        "a particle whose density is below this fraction of the full-support density is on the "
        "free surface and takes P = 0",
-       0.9},
+       d.free_surface_threshold},
       {"surface_pressure", "-",
        "where P = 0 holds at the free surface: \"ghost\" (d0/2 beyond the surface particles, "
        "through ghost values of the missing neighbours) or \"on_particles\" (on the surface "
        "particles themselves, half a spacing too low)",
-       std::string("ghost")},
-      {"dt", "s", "fixed time step; 0 = adaptive (cfl, viscous_number, dt_max)", 0.0},
-      {"cfl", "-", "Courant number for the adaptive step: dt <= cfl h / max|u|", 0.2},
+       d.surface_pressure},
+      {"dt", "s", "fixed time step; 0 = adaptive (cfl, viscous_number, dt_max)", d.dt},
+      {"cfl", "-", "Courant number for the adaptive step: dt <= cfl h / max|u|", d.cfl},
       {"viscous_number", "-", "viscous limit of the adaptive step: dt <= viscous_number h^2 / nu",
-       0.125},
-      {"dt_max", "s", "largest adaptive step", 1.0e-3},
-      {"dt_min", "s", "an adaptive step below this stops the run as unstable", 1.0e-7},
-      {"end_time", "s", "simulated time at which the run ends", 1.0},
-      {"wall_slip", "-", "default wall slip ratio: 0 no-slip, 1 free-slip (paper: 0.65)", 0.65},
+       d.viscous_number},
+      {"dt_max", "s", "largest adaptive step", d.dt_max},
+      {"dt_min", "s", "an adaptive step below this stops the run as unstable", d.dt_min},
+      {"end_time", "s", "simulated time at which the run ends", d.end_time},
+      {"wall_slip", "-", "default wall slip ratio: 0 no-slip, 1 free-slip (paper: 0.65)",
+       d.wall_slip},
       {"wall_friction", "-",
        "\"log_law\": the first fluid layer at a wall feels the smooth-wall law-of-the-wall "
        "stress the resolved viscous term misses, times (1 - wall_slip); \"none\": viscous "
        "stress only (default: it moves the dam-break front by about 0.01 a, docs/method.md)",
-       std::string("none")},
-      {"wall_layers", "-", "wall particle layers; 0 = enough to fill the kernel support", 0.0},
+       d.wall_friction},
+      {"wall_layers", "-", "wall particle layers; 0 = enough to fill the kernel support",
+       double(d.wall_layers)},
       {"turbulence", "-", "\"none\" or \"smagorinsky\" (sub-particle-scale eddy viscosity)",
-       std::string("none")},
-      {"smagorinsky_constant", "-", "C_s of the Smagorinsky model (nu_t = (C_s d0)^2 |S|)", 0.12},
+       d.turbulence},
+      {"smagorinsky_constant", "-", "C_s of the Smagorinsky model (nu_t = (C_s d0)^2 |S|)",
+       d.smagorinsky_constant},
       {"solver", "-",
        "pressure solver: \"cholmod\" (direct), \"pcg\" (Jacobi-preconditioned CG, warm-started), "
        "\"pcg_amg\" (CG preconditioned by a BoomerAMG V-cycle, warm-started), "
-       "\"auto\" (cholmod up to 60000 unknowns in 2D, pcg otherwise)",
-       std::string("auto")},
+       "\"auto\" (2D: cholmod up to 60000 unknowns, pcg_amg above; 3D: pcg below 50000 "
+       "unknowns, pcg_amg from 50000; docs/performance.md)",
+       d.solver},
       {"solver_tolerance", "-", "relative residual |b - Ax| / |b| at which pcg and pcg_amg stop",
-       1.0e-8},
+       d.solver_tolerance},
       {"solver_max_iterations", "-", "pcg and pcg_amg iteration limit; reaching it stops the run",
-       5000.0},
+       double(d.solver_max_iterations)},
       {"pressure_gradient", "-",
        "corrector gradient: \"symmetric\" (momentum-conserving) or \"difference\"",
-       std::string("symmetric")},
+       d.pressure_gradient},
       {"wall_pressure", "-",
        "wall condition of the PPE: \"neumann\" (dP/dn from the fluid's relative velocity), "
        "\"dynamic\" (walls in the divergence, dP/dn = rho0 (g - a_wall).n; solves dynamic "
        "bodies with the pressure) or \"auto\" (dynamic when the scene has dynamic bodies)",
-       std::string("auto")},
+       d.wall_pressure},
       {"shifting", "-",
        "fixed particle shifting A: delta r = -A h^2 grad C each step (Lind et al. 2012); 0 = off",
-       0.0},
+       d.shifting},
       {"shifting_with_speed", "-",
        "particle shifting in proportion to the distance moved, A_u: delta r = -A_u h u dt grad C "
        "with u the particle's speed (Skillen et al. 2013); keeps fast flows free of particle "
        "clumping and leaves still water alone; 0 = off",
-       2.0},
+       d.shifting_with_speed},
       {"surface_smoothing", "-",
        "free-surface particles move with this fraction of their neighbourhood's mean velocity "
        "(XSPH on the surface only; 0 = off)",
-       0.5},
-      {"output_interval", "s", "simulated time between output frames", 0.05},
-      {"max_speed", "m/s", "a faster particle stops the run as unstable; 0 = 10 sqrt(2 g L)", 0.0},
+       d.surface_smoothing},
+      {"output_interval", "s", "simulated time between output frames", d.output_interval},
+      {"max_speed", "m/s", "a faster particle stops the run as unstable; 0 = 10 sqrt(2 g L)",
+       d.max_speed},
       {"energy_gain_limit", "-",
        "the energy guard: a run whose mechanical energy (fluid and bodies, kinetic + potential) "
        "exceeds its start plus the work moving walls and bodies can have done plus this "
        "fraction of M_fluid g H stops as unstable (docs/stability.md); 0 = off",
-       0.1},
+       d.energy_gain_limit},
       {"contact_overlap_limit", "-",
        "the contact guard: a body overlapping a wall or another body by more than this "
        "fraction of d0 after a step stops the run as unstable (docs/stability.md); 0 = off",
-       0.5},
-      {"periodic", "-", "periodic axes, e.g. \"x\" (needs domain_min and domain_max)",
-       std::string("")},
+       d.contact_overlap_limit},
+      {"periodic", "-", "periodic axes, e.g. \"x\" (needs domain_min and domain_max)", d.periodic},
       {"domain_min", "m",
        "lower corner of the domain; particles leaving it stop the run; "
        "empty = bounding box of the scene plus a margin",
        Vec{}},
       {"domain_max", "m", "upper corner of the domain", Vec{}},
-      {"threads", "-", "OpenMP threads; 0 = all cores (the CLI's --threads wins)", 0.0},
+      {"threads", "-", "OpenMP threads; 0 = all cores (the CLI's --threads wins)",
+       double(d.threads)},
       {"max_particles", "-",
        "a scene whose particle count, estimated from its shapes before anything is allocated, "
        "exceeds this is refused (exit 1), so a mistyped d0 cannot exhaust the machine's memory",
-       5e7},
+       d.max_particles},
   };
   return table;
 }
