@@ -26,8 +26,8 @@ using WallMotion = std::function<void(double t, Vec3& displacement, Vec3& veloci
 struct WallSpec {
   std::string name;
   Shape shape;
-  double slip = 0.65;    // 0 no-slip, 1 free-slip
-  WallMotion motion;     // empty for a fixed wall
+  double slip = SimulationParameters{}.wall_slip;  // 0 no-slip, 1 free-slip
+  WallMotion motion;                               // empty for a fixed wall
   std::string material;  // contact material (MaterialSpec name); empty: "default"
   SourceLocation where;
   bool moving() const { return static_cast<bool>(motion); }
@@ -76,10 +76,10 @@ struct BodySpec {
   enum class Motion { Dynamic, Fixed, Prescribed };
   std::string name;
   Shape shape;
-  double density = 0.0;  // [kg/m^dim]
-  double mass = 0.0;     // [kg] (2D: kg/m)
-  std::string material;  // contact material; empty: "default"
-  double slip = 0.65;    // slip ratio of its surface for the fluid
+  double density = 0.0;                            // [kg/m^dim]
+  double mass = 0.0;                               // [kg] (2D: kg/m)
+  std::string material;                            // contact material; empty: "default"
+  double slip = SimulationParameters{}.wall_slip;  // slip ratio of its surface for the fluid
   Motion motion = Motion::Dynamic;
   BodyMotion prescribed;                 // Motion::Prescribed
   Vec3 velocity = Vec3::Zero();          // initial, of the centre of mass
