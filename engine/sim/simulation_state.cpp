@@ -2,8 +2,8 @@
 // next step reads and does not rebuild itself. Rebuilt by the step and therefore not saved: the
 // neighbour grid and lists, the free-surface and squeeze-film marks, the predicted velocity,
 // the virtual-marker velocities, the PPE matrix and right-hand side, the active boundary, the
-// linear solver (it keeps nothing between solves). Constant and rebuilt from the scene: kinds,
-// groups, wall distances and slip, the bodies' models, the contact walls and laws.
+// linear solver (dropped after every frame: run_loop.cpp). Constant and rebuilt from the scene:
+// kinds, groups, wall distances and slip, the bodies' models, the contact walls and laws.
 #include <omp.h>
 
 #include <cstring>

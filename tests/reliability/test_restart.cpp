@@ -3,7 +3,7 @@
 // thread count): every frame (time, step, position, velocity, pressure, kind, id, body), every
 // per-step series (/stats but wall_seconds, /probes, /bodies) and the body CSVs. Three ways to
 // stop: a run that ended at an earlier end_time, SIGKILL, SIGTERM (which adds a frame of its
-// own at the moment it stopped).
+// own at the moment it stopped, without a checkpoint: the restart replaces it).
 #include <gtest/gtest.h>
 
 #include <cstring>
@@ -121,7 +121,7 @@ TEST(Restart, DamBreakContinuedToALaterEndTimeIsTheUninterruptedRun) {
   const Comparison c = expect_same_run(work / "full" / "dambreak_2d.h5", file, 0.15);
   EXPECT_EQ(c.frames, 61);
   EXPECT_EQ(c.frames_after, 30);
-  EXPECT_EQ(c.series, 15);  // 11 /stats series (not wall_seconds), 2 probes x (time, value)
+  EXPECT_GE(c.series, 13);  // every /stats series (not wall_seconds), 2 probes x (time, value)
   // The rendered frames go on with the same numbers (every 4th frame) and the same pixels.
   int pngs = 0;
   for (const auto& entry : fs::directory_iterator(work / "full" / "frames")) {
@@ -144,33 +144,37 @@ TEST(Restart, DamBreakContinuedToALaterEndTimeIsTheUninterruptedRun) {
 }
 
 // The sinking box at rest on the floor: contact springs with friction, the body's velocity
-// solved with the pressure (implicit coupling, PCG warm-started from the last step's response
-// fields), particle shifting.
-const std::vector<std::string> kBoxRun = {"run",       kScenes + "sinking_box_2d.lua",
-                                          "--set",     "d0=0.01",
-                                          "--set",     "drop=0.01",
-                                          "--set",     "output_interval=0.02",
-                                          "--set",     "end_time=0.3",
-                                          "--set",     "solver=pcg",
-                                          "--threads", "1",
-                                          "--quiet"};
+// solved with the pressure (implicit coupling, its solves warm-started from the last step's
+// response fields), particle shifting. Killed with Jacobi PCG, stopped by SIGTERM with
+// BoomerAMG PCG (a set-up serves 5 solves, 4 a step here: with 21 steps a frame, one would
+// carry over a frame if the solver did not start afresh there).
+std::vector<std::string> box_run(const std::string& solver) {
+  return {"run",       kScenes + "sinking_box_2d.lua",
+          "--set",     "d0=0.01",
+          "--set",     "drop=0.01",
+          "--set",     "output_interval=0.021",
+          "--set",     "end_time=0.3",
+          "--set",     "solver=" + solver,
+          "--threads", "1",
+          "--quiet"};
+}
 
 // The uninterrupted box run (each test makes its own: ctest runs them side by side).
-fs::path box_reference(const std::string& name) {
+fs::path box_reference(const std::string& name, const std::string& solver) {
   const fs::path dir = fs::path(WASHOUT_TEST_OUTPUT_DIR) / name;
   fs::remove_all(dir);
   const auto r =
-      test::run_washout(with(kBoxRun, {"--out", dir.string()}), (dir.string() + ".log"), 120);
+      test::run_washout(with(box_run(solver), {"--out", dir.string()}), dir.string() + ".log", 120);
   EXPECT_EQ(r.status, 0) << r.output;
   return dir;
 }
 
 // Starts the box run into `dir`, waits for frame 3 in its log and sends `sig`.
-test::ProgramResult stop_box_run(const fs::path& dir, int sig) {
+test::ProgramResult stop_box_run(const fs::path& dir, const std::string& solver, int sig) {
   fs::remove_all(dir);
   fs::create_directories(dir);
   const std::string log = (dir / "first.log").string();
-  const pid_t pid = test::start_washout(with(kBoxRun, {"--out", dir.string()}), log);
+  const pid_t pid = test::start_washout(with(box_run(solver), {"--out", dir.string()}), log);
   const auto start = std::chrono::steady_clock::now();
   while (std::chrono::steady_clock::now() - start < std::chrono::seconds(60) &&
          read_text(log).find("frame    3 ") == std::string::npos)
@@ -180,18 +184,18 @@ test::ProgramResult stop_box_run(const fs::path& dir, int sig) {
 }
 
 TEST(Restart, BodyInContactKilledAndRestartedIsTheUninterruptedRun) {
-  const fs::path reference = box_reference("restart_box_killed_reference");
+  const fs::path reference = box_reference("restart_box_killed_reference", "pcg");
   const fs::path dir = fs::path(WASHOUT_TEST_OUTPUT_DIR) / "restart_box_killed";
-  const auto first = stop_box_run(dir, SIGKILL);
+  const auto first = stop_box_run(dir, "pcg", SIGKILL);
   ASSERT_EQ(first.signal, SIGKILL) << "the run ended before it was killed:\n" << first.output;
   const fs::path file = dir / "sinking_box_2d.h5";
-  const auto rest = test::run_washout(with(kBoxRun, {"--restart", file.string()}),
+  const auto rest = test::run_washout(with(box_run("pcg"), {"--restart", file.string()}),
                                       (dir / "rest.log").string(), 120);
   ASSERT_EQ(rest.status, 0) << rest.output;
   const int from = continued_from(rest.output);
   EXPECT_GE(from, 3) << rest.output;
   EXPECT_LT(from, 15) << rest.output;
-  const double restart_time = 0.02 * from;
+  const double restart_time = 0.021 * from;
   const Comparison c = expect_same_run(reference / "sinking_box_2d.h5", file, restart_time);
   EXPECT_EQ(c.frames, 16);
   EXPECT_EQ(c.frames_after, 15 - from);
@@ -204,22 +208,25 @@ TEST(Restart, BodyInContactKilledAndRestartedIsTheUninterruptedRun) {
 }
 
 TEST(Restart, BodyInContactStoppedBySigtermAndRestartedIsTheUninterruptedRun) {
-  const fs::path reference = box_reference("restart_box_sigterm_reference");
+  const fs::path reference = box_reference("restart_box_sigterm_reference", "pcg_amg");
   const fs::path dir = fs::path(WASHOUT_TEST_OUTPUT_DIR) / "restart_box_sigterm";
-  const auto first = stop_box_run(dir, SIGTERM);
+  const auto first = stop_box_run(dir, "pcg_amg", SIGTERM);
   ASSERT_EQ(first.status, 4) << first.output;
   const fs::path file = dir / "sinking_box_2d.h5";
-  const auto rest = test::run_washout(with(kBoxRun, {"--restart", file.string()}),
+  const auto rest = test::run_washout(with(box_run("pcg_amg"), {"--restart", file.string()}),
                                       (dir / "rest.log").string(), 120);
   ASSERT_EQ(rest.status, 0) << rest.output;
   const int from = continued_from(rest.output);
   EXPECT_GE(from, 3) << rest.output;
-  const Comparison c = expect_same_run(reference / "sinking_box_2d.h5", file, 0.02 * from);
+  const Comparison c = expect_same_run(reference / "sinking_box_2d.h5", file, 0.021 * from);
   EXPECT_EQ(c.frames, 16);
+  // The frame SIGTERM wrote between two grid frames has no checkpoint and was replaced.
+  EXPECT_EQ(io::RunFileReader(file.string()).frame_count(), 16u);
   EXPECT_EQ(c.series_rows, 300u);
   EXPECT_EQ(read_text(reference / "box.csv"), read_text(dir / "box.csv"));
   std::printf(
-      "box stopped by SIGTERM, continued from frame %d: %d frames and %d series bitwise "
+      "box (BoomerAMG PCG) stopped by SIGTERM, continued from frame %d: %d frames and %d series "
+      "bitwise "
       "equal\n",
       from, c.frames, c.series);
 }
