@@ -232,6 +232,72 @@ function validation.martin_moyce_front(P, a, bound)
   }
 end
 
+-- The instantaneous release of a column of width a and depth H standing on a floor at z = 0
+-- against a back wall at x = 0 (its face at x = a): the potential-flow solution at t = 0+
+-- (Pohle 1952; Stansby, Chegini & Barnes 1998). The pressure solves Laplace's equation with
+-- P = 0 on the face and the top, dP/dz = -rho g on the floor and dP/dx = 0 on the back wall:
+--   P(x, z) = rho g (H - z) - sum_{n odd} 8 rho g H / (n pi)^2 cosh(k x) / cosh(k a) cos(k z),
+--   k = n pi / (2 H),
+-- and the face's horizontal acceleration -dP/dx / rho = sum_{n odd} 4 g / (n pi)
+-- sinh(k x) / cosh(k a) cos(k z), which tends to (2 g / pi) ln cot(pi z / 4H) for a wide column
+-- (log-singular at the floor). Returns P(x, z) and a_x(x, z).
+function validation.instant_release_solution(a, H, rho, g)
+  local function solution(x, z)
+    local p, ax = rho * g * (H - z), 0
+    for n = 1, 4001, 2 do
+      local k = n * math.pi / (2 * H)
+      local decay = math.exp(-k * (a - x))  -- cosh(k x) / cosh(k a), safe from overflow
+      local ch = decay * (1 + math.exp(-2 * k * x)) / (1 + math.exp(-2 * k * a))
+      local sh = decay * (1 - math.exp(-2 * k * x)) / (1 + math.exp(-2 * k * a))
+      local c = 8 * rho * g * H / (n * n * math.pi * math.pi)
+      p = p - c * ch * math.cos(k * z)
+      ax = ax + c * k * sh * math.cos(k * z) / rho
+      if c * ch < 1e-12 * rho * g * H then break end
+    end
+    return p, ax
+  end
+  return solution
+end
+
+-- Cases: the first instant of the dam break of a column of width a and depth H released at
+-- t = 0 (back wall at x = 0, floor at z = 0), against validation.instant_release_solution in
+-- the first output frame (the release is over a few steps old, so P is still the t = 0+ field
+-- and u_x = a_x t). "release_pressure": RMS over the fluid of (P - P_exact) / (rho g H);
+-- "release_acceleration": relative L2 of u_x / t over the face's particle column
+-- (x > a - d0) between 0.05 H and 0.95 H (the floor's corner is log-singular).
+function validation.instant_release(P, a, H, bounds)
+  local rho, g = P.rho0, validation.g(P)
+  local exact = validation.instant_release_solution(a, H, rho, g)
+  if P.dim ~= 2 then error("validation.instant_release: a 2D case (x, z)") end
+  local first = P.output_interval
+  if first > 0.01 then
+    error("validation.instant_release: the first output frame (t = " .. first ..
+          " s) must be within 0.01 s of the release, while P is still the t = 0+ field")
+  end
+  washout.validation {
+    name = "release_pressure", bound = bounds.pressure,
+    metric = string.format("RMS of (P - P_exact) / (rho g H) over the fluid at t = %g s", first),
+    reference = "instantaneous release, potential flow at t = 0+ (Pohle 1952), analytic",
+    error = validation.profile_l2 {
+      time = first, field = "pressure", normalize = rho * g * H,
+      reference = function(x) return (exact(x[1], x[2])) end,
+    },
+  }
+  washout.validation {
+    name = "release_acceleration", bound = bounds.acceleration,
+    metric = string.format("relative L2 of u_x / t on the column's face (0.05 H < z < 0.95 H) at t = %g s", first),
+    reference = "instantaneous release, potential flow at t = 0+ (Pohle 1952), analytic",
+    error = validation.profile_l2 {
+      time = first, field = "velocity", component = 1,
+      select = function(x) return x[1] > a - P.d0 and x[2] > 0.05 * H and x[2] < 0.95 * H end,
+      reference = function(x, t)
+        local _, ax = exact(x[1], x[2])
+        return ax * t
+      end,
+    },
+  }
+end
+
 -- Case: water at rest of depth H over a floor at vertical coordinate 0 between lo and hi
 -- (the horizontal extent of the tank's inside, {x0, x1} in 2D, {x0, y0, x1, y1} in 3D).
 -- "pressure": RMS over fluid particles deeper than 3 d0 of (P - rho g (H - z)) / (rho g H) in
