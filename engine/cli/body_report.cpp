@@ -6,6 +6,7 @@
 #include <filesystem>
 #include <sstream>
 
+#include "engine/cli/landing_load.hpp"
 #include "engine/io/run_file_reader.hpp"
 #include "engine/io/run_file_writer.hpp"
 
@@ -33,6 +34,39 @@ std::string when(double t) {
   char b[32];
   std::snprintf(b, sizeof b, "%.3f s", t);
   return b;
+}
+
+// The windowed peaks and the first landing's impulses (engine/cli/landing_load.hpp).
+void summarize_landing(const BodyTrack& track, const Vec3& up, const BodyReportSettings& settings,
+                       BodySummary& s) {
+  const std::size_t n = track.rows();
+  const std::vector<double> bounds = step_bounds(track.time);
+  const double window = settings.load_window;
+  s.load_window = window;
+  std::vector<double> vertical(n), contact(n);
+  for (std::size_t k = 0; k < n; ++k) {
+    vertical[k] = row3(track.force_fluid, k).dot(up);
+    contact[k] = row3(track.force_contact, k).norm();
+  }
+  const WindowedPeak fx = windowed_peak(bounds, track.force_fluid, 3, 0, window);
+  const WindowedPeak fv = windowed_peak(bounds, vertical, 1, 0, window);
+  s.peak_force_horizontal_windowed = fx.value;
+  s.peak_force_horizontal_windowed_time = fx.time;
+  s.peak_force_vertical_windowed = fv.value;
+  s.peak_force_vertical_windowed_time = fv.time;
+
+  const std::size_t k =
+      first_landing(bounds, contact, settings.released_fraction * s.weight, settings.release_hold);
+  if (k >= n) return;
+  s.landing_time = track.time[k];
+  s.landing_duration = settings.landing_duration;
+  const double a = bounds[k], b = bounds[k] + settings.landing_duration;
+  for (std::size_t c = 0; c < 3; ++c) {
+    s.landing_impulse_fluid[c] = load_integral(bounds, track.force_fluid, 3, c, a, b);
+    s.landing_impulse_contact[c] = load_integral(bounds, track.force_contact, 3, c, a, b);
+    if (k > 0 && track.velocity.size() == 3 * n)
+      s.landing_velocity[c] = track.velocity[3 * (k - 1) + c];
+  }
 }
 
 }  // namespace
@@ -73,6 +107,14 @@ BodySummary summarize_body(const BodyTrack& track, const Vec3& gravity,
       ++s.load_spikes;
       if (magnitude[k] > s.largest_spike) s.largest_spike = magnitude[k], s.largest_spike_time = t;
     }
+    if (std::abs(ff.x()) > std::abs(s.peak_force_horizontal_one_step)) {
+      s.peak_force_horizontal_one_step = ff.x();
+      s.peak_force_horizontal_one_step_time = t;
+    }
+    if (std::abs(ff.dot(up)) > std::abs(s.peak_force_vertical_one_step)) {
+      s.peak_force_vertical_one_step = ff.dot(up);
+      s.peak_force_vertical_one_step_time = t;
+    }
     if (!is_spike && std::abs(ff.x()) > std::abs(s.peak_force_horizontal)) {
       s.peak_force_horizontal = ff.x();
       s.peak_force_horizontal_time = t;
@@ -104,6 +146,7 @@ BodySummary summarize_body(const BodyTrack& track, const Vec3& gravity,
   }
   const Vec3 d = row3(track.position, n - 1) - x0;
   s.displacement = {d.x(), d.y(), d.z()};
+  summarize_landing(track, up, settings, s);
   return s;
 }
 
@@ -123,9 +166,10 @@ std::vector<BodyTrack> read_body_tracks(const std::string& h5_path) {
       t.angle = run.read_doubles(group + "/angle");
       t.force_fluid = run.read_doubles(group + "/force_fluid");
       t.force_contact = run.read_doubles(group + "/force_contact");
+      if (run.has(group + "/velocity")) t.velocity = run.read_doubles(group + "/velocity");
       const std::size_t n = t.time.size();
       if (t.position.size() != 3 * n || t.angle.size() != n || t.force_fluid.size() != 3 * n ||
-          t.force_contact.size() != 3 * n)
+          t.force_contact.size() != 3 * n || (!t.velocity.empty() && t.velocity.size() != 3 * n))
         throw io::RunFileError(h5_path + ": the datasets of " + group + " differ in length");
     }
     tracks.push_back(std::move(t));
@@ -173,9 +217,25 @@ void store_body_summary(const std::string& h5_path, const std::string& body, con
         {"peak_angle_time", s.peak_angle_time},
         {"load_spikes", static_cast<double>(s.load_spikes)},
         {"largest_spike", s.largest_spike},
-        {"largest_spike_time", s.largest_spike_time}};
+        {"largest_spike_time", s.largest_spike_time},
+        {"peak_force_horizontal_one_step", s.peak_force_horizontal_one_step},
+        {"peak_force_horizontal_one_step_time", s.peak_force_horizontal_one_step_time},
+        {"peak_force_vertical_one_step", s.peak_force_vertical_one_step},
+        {"peak_force_vertical_one_step_time", s.peak_force_vertical_one_step_time},
+        {"load_window", s.load_window},
+        {"peak_force_horizontal_windowed", s.peak_force_horizontal_windowed},
+        {"peak_force_horizontal_windowed_time", s.peak_force_horizontal_windowed_time},
+        {"peak_force_vertical_windowed", s.peak_force_vertical_windowed},
+        {"peak_force_vertical_windowed_time", s.peak_force_vertical_windowed_time},
+        {"landing_time", s.landing_time},
+        {"landing_duration", s.landing_duration}};
     for (const auto& [name, value] : scalars) write_double_attribute(group, name, &value, 1, where);
     write_double_attribute(group, "final_displacement", s.displacement.data(), 3, where);
+    write_double_attribute(group, "landing_velocity", s.landing_velocity.data(), 3, where);
+    write_double_attribute(group, "landing_impulse_fluid", s.landing_impulse_fluid.data(), 3,
+                           where);
+    write_double_attribute(group, "landing_impulse_contact", s.landing_impulse_contact.data(), 3,
+                           where);
   } catch (...) {
     H5Gclose(group);
     H5Fclose(file);
@@ -206,6 +266,21 @@ std::string format_body_summary(const BodyTrack& track, const BodySummary& s) {
                   s.load_spikes, s.load_spikes == 1 ? "" : "s", s.largest_spike, unit,
                   s.weight > 0 ? s.largest_spike / s.weight : 0.0,
                   when(s.largest_spike_time).c_str());
+    o << b;
+  }
+  std::snprintf(b, sizeof b,
+                "; mean over %.3g s windows: horizontal %.4g %s (%s), vertical %.4g %s (%s)",
+                s.load_window, s.peak_force_horizontal_windowed, unit,
+                when(s.peak_force_horizontal_windowed_time).c_str(), s.peak_force_vertical_windowed,
+                unit, when(s.peak_force_vertical_windowed_time).c_str());
+  o << b;
+  if (!std::isnan(s.landing_time)) {
+    const char* impulse_unit = track.dim == 2 ? "N s/m" : "N s";
+    const int v = track.dim == 2 ? 1 : 2;  // the vertical axis of the scenes
+    std::snprintf(b, sizeof b,
+                  "; lands %s: fluid impulse %.4g %s, contact %.4g %s over %.3g s (vertical)",
+                  when(s.landing_time).c_str(), s.landing_impulse_fluid[v], impulse_unit,
+                  s.landing_impulse_contact[v], impulse_unit, s.landing_duration);
     o << b;
   }
   return o.str();

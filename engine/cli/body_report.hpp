@@ -24,6 +24,7 @@ struct BodyTrack {
   std::vector<double> angle;        // [T] rad about the body's angle_axis
   std::vector<double> force_fluid;  // [T x 3] N (2D: N/m)
   std::vector<double> force_contact;
+  std::vector<double> velocity;  // [T x 3] m/s; empty in files written without it
   std::size_t rows() const { return time.size(); }
 };
 
@@ -38,6 +39,15 @@ struct BodyReportSettings {
   // step: its size grows as 1/dt, docs/stability.md). It is counted and left out of the peaks.
   double spike_weights = 10.0;  // 0: every load counts in the peaks
   double spike_ratio = 2.0;
+  // The window of the windowed peaks (engine/cli/landing_load.hpp): 10 fluid steps at the
+  // default dt_max = 1 ms, so the mean spans many steps at any dt a run takes, and short beside
+  // the rise of a wave's load on a girder (about 0.1 s).
+  double load_window = 0.01;  // s
+  // The span of a landing's impulse, long enough to hold the landing's hops (the sinking box's
+  // second hop can land 0.03 s after its first contact) and the outflow of the water it squeezes:
+  // over 0.05 s the box's impulse stays within 11 % of its mid-range over a 4x change of dt,
+  // over 0.01 s it changes by up to 2x (docs/stability.md, "Landing loads").
+  double landing_duration = 0.05;  // s
 };
 
 constexpr double kNotFound = std::numeric_limits<double>::quiet_NaN();
@@ -56,6 +66,29 @@ struct BodySummary {
   int load_spikes = 0;         // one-step spikes left out of the peak forces
   double largest_spike = 0.0;  // |F_fluid| of the largest of them
   double largest_spike_time = kNotFound;
+  // The same two extremes over every row, one-step spikes included: the raw per-step load,
+  // whose landing peak grows as 1/dt (kept to show it, not to design with).
+  double peak_force_horizontal_one_step = 0.0;
+  double peak_force_horizontal_one_step_time = kNotFound;
+  double peak_force_vertical_one_step = 0.0;
+  double peak_force_vertical_one_step_time = kNotFound;
+  // The extremes of the fluid load averaged over load_window seconds (signed; the time is the
+  // window's centre): bounded as dt falls, the load to compare across resolutions.
+  double load_window = 0.0;  // s
+  double peak_force_horizontal_windowed = 0.0;
+  double peak_force_horizontal_windowed_time = kNotFound;
+  double peak_force_vertical_windowed = 0.0;
+  double peak_force_vertical_windowed_time = kNotFound;
+  // The first landing: the row of the first contact above released_fraction W after at least
+  // release_hold s free of contact (NaN: none). The impulses of the fluid and the contact force
+  // over landing_duration s from the start of that row's step, N s (2D: N s/m), and the body's
+  // velocity at that start (NaN if the file has no velocity): M times it is the momentum the
+  // landing stops, and J_fluid + J_contact + M g landing_duration = M (v_after - v_landing).
+  double landing_duration = 0.0;  // s
+  double landing_time = kNotFound;
+  std::array<double, 3> landing_velocity{kNotFound, kNotFound, kNotFound};
+  std::array<double, 3> landing_impulse_fluid{kNotFound, kNotFound, kNotFound};
+  std::array<double, 3> landing_impulse_contact{kNotFound, kNotFound, kNotFound};
 };
 
 BodySummary summarize_body(const BodyTrack& track, const Vec3& gravity,
