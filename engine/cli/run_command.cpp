@@ -17,6 +17,7 @@
 #include "engine/cli/restart.hpp"
 #include "engine/io/run_file_reader.hpp"
 #include "engine/io/run_file_writer.hpp"
+#include "engine/io/run_recorder.hpp"
 
 namespace washout::cli {
 namespace {
@@ -124,8 +125,11 @@ RunOutcome run_scene(const RunRequest& request) {
     const lua::FrameRequest frames = scene.frames();
     Simulation sim(model);
     gravity = sim.params().gravity;
+    // The run file is kept by an observer like any other; it is closed when the run returns,
+    // before the body reports read it back.
+    io::RunRecorder recorder(outcome.h5_path, resume ? &*resume : nullptr);
     ProgressDisplay progress(request.live_progress, request.log);
-    std::vector<RunObserver*> observers = {&progress};
+    std::vector<RunObserver*> observers = {&recorder, &progress};
     if (auto* callbacks = scene.callbacks()) observers.push_back(callbacks);
     std::unique_ptr<RunObserver> frame_writer;
     if (request.render_frames && frames.enabled) {
@@ -136,7 +140,7 @@ RunOutcome run_scene(const RunRequest& request) {
     InterruptObserver interrupt;  // last, so that its reason names the signal
     observers.push_back(&interrupt);
     run_started = true;
-    outcome.summary = sim.run(outcome.h5_path, observers, resume ? &*resume : nullptr);
+    outcome.summary = sim.run(observers, resume ? &*resume : nullptr);
     // Each body's CSV and wash-out summary, also after an unstable run (its file stays readable).
     outcome.bodies = report_bodies(outcome.h5_path, out_dir, gravity, request.log);
     if (outcome.summary.status == RunStatus::Unstable) outcome.exit_code = kUnstable;

@@ -7,7 +7,6 @@
 
 #include "engine/contact/shape_wall.hpp"
 #include "engine/io/checkpoint.hpp"
-#include "engine/io/run_file_writer.hpp"
 #include "engine/rigid/hydrodynamic_load.hpp"
 #include "engine/sim/body_surface_pressure.hpp"
 #include "engine/sim/push_out.hpp"
@@ -96,7 +95,6 @@ RigidBodySystem::RigidBodySystem(const Model& model, std::vector<BuiltBody> bodi
   }
   fluid_loads_.assign(count, {});
   contact_loads_.assign(count, {});
-  series_.resize(count);
   last_report_.contact_load.assign(count, {});
 }
 
@@ -255,65 +253,6 @@ bool RigidBodySystem::push_out(std::size_t b, Vec3& x, Vec3& u, double clearance
   push_out_of_solid(x, u, distance, normal, clearance,
                     [&](const Vec3& y) { return velocity_at(b, y); });
   return true;
-}
-
-void RigidBodySystem::record(double time) {
-  for (std::size_t b = 0; b < size(); ++b) {
-    Series& out = series_[b];
-    const rigid::BodyState& s = states_[b];
-    auto push = [](std::vector<double>& v, const Vec3& x) {
-      v.insert(v.end(), {x[0], x[1], x[2]});
-    };
-    out.time.push_back(time);
-    push(out.position, s.position);
-    const Eigen::Quaterniond& q = s.orientation;
-    out.quaternion.insert(out.quaternion.end(), {q.w(), q.x(), q.y(), q.z()});
-    push(out.velocity, s.velocity);
-    push(out.omega, s.angular_velocity);
-    push(out.force_fluid, fluid_loads_[b].force);
-    push(out.force_contact, contact_loads_[b].force);
-    push(out.torque_fluid, fluid_loads_[b].torque);
-    push(out.torque_contact, contact_loads_[b].torque);
-    out.angle.push_back(angles_[b].angle());
-  }
-}
-
-void RigidBodySystem::flush(io::RunFileWriter& writer) {
-  for (std::size_t b = 0; b < size(); ++b) {
-    const std::string group = "/bodies/" + name(b);
-    if (!attributes_written_) {
-      const Vec3& a = angles_[b].axis();
-      std::ostringstream axis, mass, volume;
-      axis << a.x() << " " << a.y() << " " << a.z();
-      mass.precision(17);
-      mass << models_[b].mass;
-      volume.precision(17);
-      volume << volumes_[b];
-      writer.set_string_attribute(group, "rows",
-                                  "step: one row per fluid step, the state after the step and "
-                                  "the loads applied during it");
-      writer.set_string_attribute(group, "angle_axis", axis.str());
-      writer.set_string_attribute(group, "mass", mass.str());
-      writer.set_string_attribute(group, "volume", volume.str());
-    }
-    Series& s = series_[b];
-    const std::size_t rows = s.time.size();
-    if (rows == 0) continue;
-    writer.append(group + "/time", s.time.data(), rows);
-    writer.append(group + "/position", s.position.data(), rows, 3);
-    writer.append(group + "/quaternion", s.quaternion.data(), rows, 4);
-    writer.append(group + "/velocity", s.velocity.data(), rows, 3);
-    writer.append(group + "/omega", s.omega.data(), rows, 3);
-    writer.append(group + "/force_fluid", s.force_fluid.data(), rows, 3);
-    writer.append(group + "/force_contact", s.force_contact.data(), rows, 3);
-    writer.append(group + "/torque_fluid", s.torque_fluid.data(), rows, 3);
-    writer.append(group + "/torque_contact", s.torque_contact.data(), rows, 3);
-    writer.append(group + "/angle", s.angle.data(), rows);
-    for (auto* v : {&s.time, &s.position, &s.quaternion, &s.velocity, &s.omega, &s.force_fluid,
-                    &s.force_contact, &s.torque_fluid, &s.torque_contact, &s.angle})
-      v->clear();
-  }
-  attributes_written_ = true;
 }
 
 void RigidBodySystem::save_state(io::Checkpoint& c) const {

@@ -24,7 +24,6 @@
 namespace washout {
 
 namespace io {
-class RunFileWriter;
 struct Checkpoint;
 }  // namespace io
 
@@ -80,10 +79,6 @@ class RigidBodySystem {
   // false (and changes nothing) if x is outside.
   bool push_out(std::size_t b, Vec3& x, Vec3& u, double clearance) const;
 
-  // One output row per body after each step; appended to /bodies/NAME at each frame.
-  void record(double time);
-  void flush(io::RunFileWriter& writer);
-
   // What the next step reads of the bodies, for a checkpoint (entries named body_* and
   // contact_*): states, the loads of the last step (its contact load enters the next coupling),
   // the rotation trackers and the contact springs. restore_state throws io::CheckpointError
@@ -113,13 +108,6 @@ class RigidBodySystem {
   contact::ContactScene contact_;
   contact::ContactWorkspace workspace_;
   contact::SubstepReport last_report_;
-
-  struct Series {
-    std::vector<double> time, position, quaternion, velocity, omega, force_fluid, force_contact,
-        torque_fluid, torque_contact, angle;
-  };
-  std::vector<Series> series_;
-  bool attributes_written_ = false;
 };
 
 }  // namespace washout

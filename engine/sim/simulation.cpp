@@ -13,7 +13,6 @@
 #include "engine/boundary/wall_acceleration.hpp"
 #include "engine/core/fluid_interpolation.hpp"
 #include "engine/fluid/isph_stages.hpp"
-#include "engine/io/run_file_writer.hpp"
 #include "engine/sim/particle_builder.hpp"
 #include "engine/sim/rigid_body_system.hpp"
 

@@ -26,7 +26,6 @@
 namespace washout {
 
 namespace io {
-class RunFileWriter;
 struct Checkpoint;
 }  // namespace io
 class RigidBodySystem;
@@ -66,22 +65,41 @@ struct RunSummary {
   double mean_ppe_iterations = 0.0;
   long wall_crossings = 0;   // fluid particles found inside a wall, summed over steps
   long gap_relocations = 0;  // of those, moved out of a closing gap (free_spot.hpp)
-  std::string output_path;
+  std::string output_path;   // where an observer keeps the run (RunObserver::kept_in)
   std::vector<std::pair<std::string, double>> stage_seconds;
 };
 
 class Simulation;
 
-// Watches a run: progress display, Lua callbacks, frame rendering. Returning false stops it.
+// Watches a run: the run file, the progress display, Lua callbacks, frame rendering. The engine
+// reports; what is written, shown or drawn is the observer's. Each hook is called for every
+// observer in the order given; the record_* hooks of all observers come before the watching
+// hooks of any, so that a callback that fails leaves the steps before it recorded.
 class RunObserver {
  public:
   virtual ~RunObserver() = default;
+  // Before frame 0; in a restarted run (which reports no frame 0), after its state is restored.
   virtual void on_start(const Simulation&) {}
+  // After each step (timed as "output").
+  virtual void record_step(const Simulation&, const StepReport&) {}
+  // A frame to keep (frame 0 is t = 0), the wall pressures brought up to date (timed as
+  // "output"). `restart`: the full state at the frame, for a frame on the output grid, from
+  // which a run continues exactly (washout run --restart); null for the frame a stop writes
+  // between two.
+  virtual void record_frame(const Simulation&, std::size_t /*frame_index*/,
+                            const io::Checkpoint* /*restart*/) {}
+  // Returning false stops the run.
   virtual bool on_step(const Simulation&, const StepReport&) { return true; }
   virtual bool on_frame(const Simulation&, std::size_t /*frame_index*/) { return true; }
+  // The run ends with an exception (a scene error mid-run): what was recorded is kept. Called
+  // before the exception leaves Simulation::run; what it throws is dropped.
+  virtual void on_abort(const Simulation&) {}
   virtual void on_finish(const Simulation&, const RunSummary&) {}
   // Why the observer stopped the run (read after on_step/on_frame returned false).
   virtual std::string stop_reason() const { return "stopped by the scene"; }
+  // Where the observer keeps the run (a run file), named in the summary and in the message of an
+  // unstable run; empty: nowhere.
+  virtual std::string kept_in() const { return {}; }
 };
 
 class Simulation {
@@ -108,10 +126,11 @@ class Simulation {
   StepReport step();
   // One step whose size is trimmed so that the run lands exactly on time `until` (a frame).
   StepReport step_until(double until);
-  // Steps to end_time, writing frames to output_path (empty: no file), each with a checkpoint.
-  // With `resume` (a checkpoint read from output_path), continues that run in that file from
-  // the checkpoint's frame instead of starting at t = 0 (washout run --restart).
-  RunSummary run(const std::string& output_path, const std::vector<RunObserver*>& observers,
+  // Steps to end_time with a frame every output_interval, reporting steps and frames to the
+  // observers (a run recorder keeps them: engine/io/run_recorder.hpp). With `resume` (a grid
+  // frame's checkpoint), continues from that frame instead of starting at t = 0 (washout run
+  // --restart).
+  RunSummary run(const std::vector<RunObserver*>& observers,
                  const io::Checkpoint* resume = nullptr);
 
   // Everything the next step reads that is not rebuilt from the scene, at full precision
@@ -149,8 +168,6 @@ class Simulation {
   // Moves fluid particle i, caught in a closing gap, to the nearest free place (free_spot.hpp).
   void move_out_of_gap(std::size_t i);
   void evaluate_probes();
-  void write_frame(io::RunFileWriter& writer);
-  void flush_series(io::RunFileWriter& writer);
   std::uint64_t compute_layout_fingerprint() const;
 
   Model model_;
@@ -190,12 +207,6 @@ class Simulation {
   long total_ppe_iterations_ = 0;
   std::vector<double> probe_values_;
   StepReport last_report_;
-  // Series buffered between frames, appended to the file at each frame.
-  std::vector<double> series_time_, series_dt_, series_residual_, series_wall_, series_energy_,
-      series_mechanical_energy_;
-  std::vector<std::int64_t> series_step_, series_iterations_, series_substeps_,
-      series_free_surface_, series_film_, series_dt_limit_;
-  std::vector<double> probe_series_;  // rows of probe_values_
 };
 
 }  // namespace washout
