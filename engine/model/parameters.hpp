@@ -85,7 +85,8 @@ struct SimulationParameters {
   std::string turbulence = "none";
   double smagorinsky_constant = 0.12;
   std::string solver = "auto";
-  double solver_tolerance = 1e-8;
+  // The loosest tolerance that moves no validated figure (docs/performance.md).
+  double solver_tolerance = 1e-6;
   int solver_max_iterations = 5000;
   std::string pressure_gradient = "symmetric";
   std::string wall_pressure = "auto";
