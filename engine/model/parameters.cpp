@@ -132,6 +132,11 @@ const std::vector<ParameterInfo>& ParameterSet::engine_table() {
        "the contact guard: a body overlapping a wall or another body by more than this "
        "fraction of d0 after a step stops the run as unstable (docs/stability.md); 0 = off",
        d.contact_overlap_limit},
+      {"wall_crossing_limit", "-",
+       "the crossing guard: more fluid particles than this fraction of the fluid (and at least "
+       "10) found newly inside walls or bodies after one step stop the run as unstable "
+       "(docs/stability.md); 0 = off",
+       d.wall_crossing_limit},
       {"periodic", "-", "periodic axes, e.g. \"x\" (needs domain_min and domain_max)", d.periodic},
       {"domain_min", "m",
        "lower corner of the domain; particles leaving it stop the run; "
@@ -371,6 +376,7 @@ SimulationParameters SimulationParameters::from(const ParameterSet& set) {
   p.max_speed = non_negative("max_speed");
   p.energy_gain_limit = non_negative("energy_gain_limit");
   p.contact_overlap_limit = non_negative("contact_overlap_limit");
+  p.wall_crossing_limit = non_negative("wall_crossing_limit");
   p.periodic = set.text("periodic");
   for (char c : p.periodic)
     if (c != 'x' && c != 'y' && c != 'z')

@@ -97,6 +97,7 @@ struct SimulationParameters {
   double max_speed = 0.0;              // 0: automatic from gravity and domain size
   double energy_gain_limit = 0.1;      // energy guard tolerance, a fraction of M g H; 0: off
   double contact_overlap_limit = 0.5;  // contact guard: deepest overlap / d0; 0: off
+  double wall_crossing_limit = 0.02;   // crossing guard: fluid fraction entering solids in a step
   std::string periodic;                // axes, e.g. "x"
   std::vector<double> domain_min, domain_max;
   int threads = 0;

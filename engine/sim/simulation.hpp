@@ -153,6 +153,7 @@ class Simulation {
   void check_energy(StepReport& report);
   void check_health(StepReport& report);
   void push_out_of_solids(StepReport& report);  // solid_push_out.cpp
+  void check_wall_crossings(std::size_t new_crossings, std::size_t first) const;
   // One step's values shared by its stages.
   struct StepInProgress {
     double dt = 0.0, t_new = 0.0;

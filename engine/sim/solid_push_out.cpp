@@ -5,6 +5,7 @@
 #include <algorithm>
 #include <limits>
 #include <optional>
+#include <sstream>
 
 #include "engine/core/fluid_interpolation.hpp"
 #include "engine/sim/free_spot.hpp"
@@ -18,9 +19,10 @@ void Simulation::push_out_of_solids(StepReport& report) {
   const std::size_t n = particles_.fluid_count;
   const int dim = particles_.dim;
   // Fluid inside a wall: only particles that see a boundary particle can be there.
-  std::size_t inside = 0, new_crossings = 0;
+  std::size_t inside = 0, new_crossings = 0, first_crossing = n;
   trapped_.assign(n, 0);
-#pragma omp parallel for reduction(+ : inside, new_crossings) schedule(dynamic, 512)
+#pragma omp parallel for reduction(+ : inside, new_crossings) reduction(min : first_crossing) \
+    schedule(dynamic, 512)
   for (std::size_t i = 0; i < n; ++i) {
     bool sees_wall = false;
     for (std::uint64_t k = neighbors_.offset[i]; k < neighbors_.offset[i + 1] && !sees_wall; ++k)
@@ -61,14 +63,35 @@ void Simulation::push_out_of_solids(StepReport& report) {
     }
     if (in_wall) {
       ++inside;
-      if (!inside_wall_[i]) ++new_crossings;
+      if (!inside_wall_[i]) ++new_crossings, first_crossing = std::min(first_crossing, i);
     }
     inside_wall_[i] = in_wall;
   }
   report.particles_in_walls = inside;
   wall_crossings_ += static_cast<long>(new_crossings);
+  check_wall_crossings(new_crossings, first_crossing);
   for (std::size_t i = 0; i < n; ++i)
     if (trapped_[i]) move_out_of_gap(i);
+}
+
+// The crossing guard (docs/stability.md): a particle or two may slip into a solid in a step
+// (a gate's closing gap) and is put back; a whole front of them means the flow or a wall's
+// motion outran the step, and pushing them all out would hide it.
+void Simulation::check_wall_crossings(std::size_t new_crossings, std::size_t first) const {
+  const double limit = model_.params.wall_crossing_limit;
+  const std::size_t n = particles_.fluid_count;
+  if (!(limit > 0) || first >= n) return;
+  const double allowed = std::max(10.0, limit * static_cast<double>(n));
+  if (static_cast<double>(new_crossings) <= allowed) return;
+  std::ostringstream m;
+  m << "wall crossings: " << new_crossings
+    << " fluid particles entered a wall or a body in one step, more than wall_crossing_limit = "
+    << limit << " of the " << n << " fluid particles (at least 10) allows; the first, particle "
+    << first << ", was put back at (" << particles_.position[0][first] << ", "
+    << particles_.position[1][first];
+  if (particles_.dim == 3) m << ", " << particles_.position[2][first];
+  m << ") m";
+  throw UnstableError(m.str());
 }
 
 double Simulation::distance_to_solids(const Vec3& x) const {

@@ -106,5 +106,35 @@ TEST(Guards, ContactOverlapNamesBodyAndWall) {
   expect_fired(f, "body 'box' overlaps wall 'tank' by ");
 }
 
+// A plate teleported 2 cm into a column of 200 particles (tests/data/wall_jump.lua): 20 of them
+// are inside it after one step, more than the crossing guard's floor of 10 (2 % of 200 is 4).
+TEST(Guards, WallCrossingsStopTheRun) {
+  const fs::path dir = fs::path(testing::TempDir()) / "guard_crossing";
+  fs::remove_all(dir);
+  fs::create_directories(dir);
+  Fired f;
+  f.result =
+      test::run_washout({"run", std::string(WASHOUT_SOURCE_DIR) + "/tests/data/wall_jump.lua",
+                         "--out", dir.string(), "--quiet", "--threads", "1"},
+                        (dir / "log.txt").string(), 120.0);
+  f.file = dir / "wall_jump.h5";
+  expect_fired(f, "wall crossings: ");
+  EXPECT_NE(f.result.output.find("more than wall_crossing_limit = 0.02 of the 200 fluid particles"),
+            std::string::npos)
+      << f.result.output;
+  // With the guard off the 20 are pushed out, and the step after the energy guard fires: the
+  // crossing guard names the cause one step earlier.
+  const fs::path off = dir / "off";
+  const auto unguarded = test::run_washout(
+      {"run", std::string(WASHOUT_SOURCE_DIR) + "/tests/data/wall_jump.lua", "--out", off.string(),
+       "--quiet", "--threads", "1", "--set", "wall_crossing_limit=0"},
+      (dir / "log_off.txt").string(), 120.0);
+  EXPECT_EQ(unguarded.status, 2) << unguarded.output;
+  EXPECT_EQ(unguarded.output.find("wall crossings: "), std::string::npos);
+  EXPECT_NE(unguarded.output.find("(step 22): energy gain"), std::string::npos) << unguarded.output;
+  EXPECT_NE(f.result.output.find("(step 21): wall crossings: 20 fluid particles"),
+            std::string::npos);
+}
+
 }  // namespace
 }  // namespace washout
