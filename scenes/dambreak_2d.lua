@@ -36,5 +36,8 @@ validation.martin_moyce_front(P, P.column_width, 0.3)
 -- fluid itself is right at t = 0+ (measured at a/d0 = 10, 20, 40: pressure 0.91 %, 0.34 %,
 -- 0.16 % of rho g H; face acceleration 7.2 %, 5.5 %, 3.7 %; docs/method.md), so the front's
 -- lead over Martin & Moyce is not the pressure solve's.
-validation.instant_release(P, P.column_width, P.column_height,
-                           { pressure = 0.012, acceleration = 0.1 })
+-- Scored when the frames are close enough to the release to see it (output_interval <= 0.01).
+if P.output_interval <= 0.01 then
+  validation.instant_release(P, P.column_width, P.column_height,
+                             { pressure = 0.012, acceleration = 0.1 })
+end
