@@ -10,6 +10,7 @@
 #include <cstdlib>
 #include <string>
 
+#include "engine/cli/assignment_argument.hpp"
 #include "engine/cli/run_command.hpp"
 #include "engine/solvers/linear_solver.hpp"
 #include "engine/solvers/solver_counters.hpp"
@@ -69,10 +70,9 @@ int main(int argc, char** argv) {
     } else if (a == "--stream" && has_value) {
       stream = std::atof(argv[++k]);
     } else if (a == "--set" && has_value) {
-      const std::string kv = argv[++k];
-      const auto eq = kv.find('=');
-      if (eq == std::string::npos || eq == 0) return usage();
-      request.overrides.emplace_back(kv.substr(0, eq), kv.substr(eq + 1));
+      const auto assignment = cli::split_assignment(argv[++k]);
+      if (!assignment) return usage();
+      request.overrides.push_back(*assignment);
     } else if (!a.empty() && a[0] != '-' && request.scene_path.empty()) {
       request.scene_path = a;
     } else {

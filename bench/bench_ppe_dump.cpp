@@ -13,6 +13,7 @@
 #include <string>
 
 #include "bench/ppe_system_file.hpp"
+#include "engine/cli/assignment_argument.hpp"
 #include "engine/cli/interrupt.hpp"
 #include "engine/cli/run_command.hpp"
 #include "engine/solvers/solver_counters.hpp"
@@ -47,10 +48,9 @@ int main(int argc, char** argv) {
       std::stringstream list(argv[++k]);
       for (std::string item; std::getline(list, item, ',');) wanted.insert(std::atol(item.c_str()));
     } else if (a == "--set" && has_value) {
-      const std::string kv = argv[++k];
-      const auto eq = kv.find('=');
-      if (eq == std::string::npos || eq == 0) return usage();
-      request.overrides.emplace_back(kv.substr(0, eq), kv.substr(eq + 1));
+      const auto assignment = cli::split_assignment(argv[++k]);
+      if (!assignment) return usage();
+      request.overrides.push_back(*assignment);
     } else if (!a.empty() && a[0] != '-' && request.scene_path.empty()) {
       request.scene_path = a;
     } else {

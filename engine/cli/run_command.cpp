@@ -10,6 +10,7 @@
 #include <stdexcept>
 #include <vector>
 
+#include "engine/cli/assignment_argument.hpp"
 #include "engine/cli/body_report.hpp"
 #include "engine/cli/frame_output.hpp"
 #include "engine/cli/interrupt.hpp"
@@ -221,12 +222,12 @@ int run_command(int argc, char** argv) {
       request.out_dir = value("--out");
     } else if (arg == "--set") {
       const std::string kv = value("--set");
-      const auto eq = kv.find('=');
-      if (eq == std::string::npos || eq == 0) {
+      const auto assignment = split_assignment(kv);
+      if (!assignment) {
         std::fprintf(stderr, "washout run: --set needs NAME=VALUE, got '%s'\n", kv.c_str());
         return kBadInput;
       }
-      request.overrides.emplace_back(kv.substr(0, eq), kv.substr(eq + 1));
+      request.overrides.push_back(*assignment);
     } else if (arg == "--threads") {
       const std::string v = value("--threads");
       char* end = nullptr;

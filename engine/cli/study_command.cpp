@@ -12,6 +12,7 @@
 #include <numeric>
 #include <sstream>
 
+#include "engine/cli/assignment_argument.hpp"
 #include "engine/cli/child_run.hpp"
 #include "engine/cli/run_command.hpp"
 #include "engine/cli/study_table.hpp"
@@ -166,15 +167,15 @@ int parse(int argc, char** argv, StudyRequest& r) {
       std::exit(kSuccess);
     } else if (arg == "--vary" || arg == "--set") {
       const std::string kv = value(arg.c_str());
-      const auto eq = kv.find('=');
-      if (eq == std::string::npos || eq == 0 || eq + 1 == kv.size()) {
+      const auto assignment = split_assignment(kv);
+      if (!assignment || assignment->second.empty()) {
         std::fprintf(stderr, "washout study: %s needs NAME=%s, got '%s'\n", arg.c_str(),
                      arg == "--vary" ? "V1,V2,..." : "VALUE", kv.c_str());
         return kBadInput;
       }
-      const std::string name = kv.substr(0, eq);
+      const auto& [name, text] = *assignment;
       if (arg == "--set") {
-        r.sets.emplace_back(name, kv.substr(eq + 1));
+        r.sets.emplace_back(name, text);
         continue;
       }
       for (const auto& [other, values] : r.vary)
@@ -182,7 +183,7 @@ int parse(int argc, char** argv, StudyRequest& r) {
           std::fprintf(stderr, "washout study: --vary %s given twice\n", name.c_str());
           return kBadInput;
         }
-      auto values = split(kv.substr(eq + 1), ',');
+      auto values = split(text, ',');
       for (const auto& v : values)
         if (v.empty()) {
           std::fprintf(stderr, "washout study: --vary %s has an empty value in '%s'\n",
