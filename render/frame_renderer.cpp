@@ -117,7 +117,8 @@ struct FrameRenderer::State {
       // A diverged particle (NaN or inf position) is left out rather than drawn anywhere.
       const bool wall = kind == static_cast<std::uint8_t>(ParticleKind::FixedWall) ||
                         kind == static_cast<std::uint8_t>(ParticleKind::MovingWall);
-      const bool drawn = p.allFinite() && !(wall && cutaway.hides(p));
+      const bool retired = kind == static_cast<std::uint8_t>(ParticleKind::Retired);
+      const bool drawn = p.allFinite() && !retired && !(wall && cutaway.hides(p));
       s.color[0] = c.r;
       s.color[1] = c.g;
       s.color[2] = c.b;

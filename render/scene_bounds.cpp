@@ -39,7 +39,13 @@ std::optional<SceneBounds> bounds_of(const ParticleView& view, double pad, Keep 
 }  // namespace
 
 SceneBounds particle_bounds(const ParticleView& view, double pad) {
-  return bounds_of(view, pad, [](std::size_t) { return true; }).value_or(SceneBounds{});
+  // Retired fluid (left the domain) is not drawn and does not stretch the picture.
+  return bounds_of(view, pad,
+                   [&](std::size_t i) {
+                     return !view.kind ||
+                            view.kind[i] != static_cast<std::uint8_t>(ParticleKind::Retired);
+                   })
+      .value_or(SceneBounds{});
 }
 
 std::optional<SceneBounds> fluid_bounds(const ParticleView& view, double pad) {

@@ -14,7 +14,7 @@ struct SceneBounds {
   Eigen::Vector3d size() const { return hi - lo; }
 };
 
-// Box of the particle centres grown by pad on every side; z is 0 in 2D.
+// Box of the particle centres (retired fluid left out) grown by pad on every side; z is 0 in 2D.
 SceneBounds particle_bounds(const ParticleView& view, double pad);
 
 // Box of the fluid particles only (kind 0), grown by pad; nullopt without fluid.

@@ -87,6 +87,13 @@ void print_summary(std::FILE* out, const Simulation& sim, const RunSummary& s) {
   std::fprintf(out, "  fluid particles found inside walls: %ld\n", s.wall_crossings);
   if (s.gap_relocations > 0)
     std::fprintf(out, "  of those, moved out of a closing gap: %ld\n", s.gap_relocations);
+  if (s.retired_particles > 0)
+    std::fprintf(out,
+                 "  fluid particles retired as they left the domain: %zu (%.2g %% of the fluid; "
+                 "the first, %s)\n",
+                 s.retired_particles,
+                 100.0 * double(s.retired_particles) / double(s.fluid_particles),
+                 s.first_retirement.c_str());
   if (!s.output_path.empty())
     std::fprintf(out, "  output: %s (%zu frames, last at t = %.4f s)\n", s.output_path.c_str(),
                  s.frames, s.last_frame_time);

@@ -7,6 +7,13 @@
 #include <string>
 
 namespace washout {
+namespace {
+
+bool retired(const Particles& p, std::size_t i) {
+  return p.kind[i] == static_cast<std::uint8_t>(ParticleKind::Retired);
+}
+
+}  // namespace
 
 long NeighborGrid::cell_coordinate(double x, int axis) const {
   long c = static_cast<long>(std::floor((x - origin_[axis]) / cell_size_[axis]));
@@ -43,10 +50,11 @@ void NeighborGrid::build(const Particles& particles, double cell_size,
     const double* x = particles.position[a].data();
 #pragma omp parallel for reduction(min : lo) reduction(max : hi)
     for (std::size_t i = 0; i < n; ++i) {
+      if (retired(particles, i)) continue;
       lo = std::min(lo, x[i]);
       hi = std::max(hi, x[i]);
     }
-    if (n == 0) lo = hi = 0.0;
+    if (lo > hi) lo = hi = 0.0;  // no particle takes part
     origin_[a] = lo - 0.5 * cell_size;
     cells_[a] = static_cast<long>(std::floor((hi - origin_[a]) / cell_size)) + 2;
   }
@@ -55,20 +63,27 @@ void NeighborGrid::build(const Particles& particles, double cell_size,
   if (cell_count > (std::size_t{1} << 31))
     throw std::runtime_error("neighbour grid too large: particles spread far beyond the domain");
 
+  // Retired particles are in no cell: nobody finds them and they find nobody.
+  const auto outside = static_cast<std::uint32_t>(cell_count);
   cell_of_.resize(n);
 #pragma omp parallel for
   for (std::size_t i = 0; i < n; ++i) {
+    if (retired(particles, i)) {
+      cell_of_[i] = outside;
+      continue;
+    }
     long c[3] = {0, 0, 0};
     for (int a = 0; a < dim_; ++a) c[a] = cell_coordinate(particles.position[a][i], a);
     cell_of_[i] = static_cast<std::uint32_t>(cell_index(c));
   }
   // Counting sort by cell: particles of one cell are contiguous in sorted_.
-  cell_start_.assign(cell_count + 1, 0);
+  cell_start_.assign(cell_count + 2, 0);
   for (std::size_t i = 0; i < n; ++i) ++cell_start_[cell_of_[i] + 1];
-  for (std::size_t c = 0; c < cell_count; ++c) cell_start_[c + 1] += cell_start_[c];
+  for (std::size_t c = 0; c <= cell_count; ++c) cell_start_[c + 1] += cell_start_[c];
   sorted_.resize(n);
   std::vector<std::uint32_t> fill(cell_start_.begin(), cell_start_.end() - 1);
   for (std::size_t i = 0; i < n; ++i) sorted_[fill[cell_of_[i]]++] = static_cast<std::uint32_t>(i);
+  sorted_.resize(cell_start_[cell_count]);  // the retired, sorted last, are dropped
 }
 
 void NeighborGrid::build_list(const Particles& particles, std::size_t query_count, double radius,
@@ -76,6 +91,7 @@ void NeighborGrid::build_list(const Particles& particles, std::size_t query_coun
   const double r2max = radius * radius;
   const auto& X = particles.position;
   auto for_each_neighbor = [&](std::size_t i, auto&& f) {
+    if (retired(particles, i)) return;
     const double p[3] = {X[0][i], X[1][i], X[2][i]};
     for_each_candidate(p, [&](std::uint32_t j) {
       if (j == i) return;

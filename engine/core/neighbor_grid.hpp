@@ -43,7 +43,7 @@ class NeighborGrid {
   double origin_[3] = {0, 0, 0};
   long cells_[3] = {1, 1, 1};
   PeriodicBox periodic_;
-  std::vector<std::uint32_t> cell_start_;  // [cell count + 1]
+  std::vector<std::uint32_t> cell_start_;  // [cell count + 2]; the last bucket: the retired
   std::vector<std::uint32_t> sorted_;      // particle indices ordered by cell
   std::vector<std::uint32_t> cell_of_;     // cell of each particle
 };

@@ -8,7 +8,16 @@
 
 namespace washout {
 
-enum class ParticleKind : std::uint8_t { Fluid = 0, FixedWall = 1, MovingWall = 2, RigidBody = 3 };
+// Retired: a fluid particle that left the domain (spray thrown over a wall). It keeps its index
+// (fluid indices stay stable ids) and its last place, and takes no further part: the neighbour
+// grid leaves it out, it does not move (docs/stability.md, the domain guard).
+enum class ParticleKind : std::uint8_t {
+  Fluid = 0,
+  FixedWall = 1,
+  MovingWall = 2,
+  RigidBody = 3,
+  Retired = 4
+};
 
 struct VectorView {
   const double* component[3] = {nullptr, nullptr, nullptr};  // x, y, z (z null in 2D)

@@ -184,9 +184,10 @@ FrameData RunFileReader::read_frame(std::size_t index) const {
     f.pressure = read_all<double>(file_, base + "/pressure", H5T_NATIVE_DOUBLE, path_);
   f.kind = read_all<std::uint8_t>(file_, base + "/kind", H5T_NATIVE_UINT8, path_);
   for (std::uint8_t k : f.kind)
-    if (k > 3)
+    if (k > 4)
       throw RunFileError(where + "/kind holds " + std::to_string(k) +
-                         " (kinds: 0 fluid, 1 fixed wall, 2 moving wall, 3 rigid body)");
+                         " (kinds: 0 fluid, 1 fixed wall, 2 moving wall, 3 rigid body, "
+                         "4 retired fluid)");
   if (exists(file_, base + "/id"))
     f.id = read_all<std::uint64_t>(file_, base + "/id", H5T_NATIVE_UINT64, path_);
   if (exists(file_, base + "/body"))

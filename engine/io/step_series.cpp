@@ -17,6 +17,7 @@ void StepSeries::record(const StepReport& report, const std::vector<double>& pro
   substeps_.push_back(report.substeps);
   free_surface_.push_back(static_cast<std::int64_t>(report.free_surface_particles));
   squeeze_film_.push_back(static_cast<std::int64_t>(report.squeeze_film_particles));
+  retired_.push_back(static_cast<std::int64_t>(report.retired_particles));
   probe_rows_.insert(probe_rows_.end(), probe_values.begin(), probe_values.end());
 }
 
@@ -35,6 +36,7 @@ void StepSeries::append_to(RunFileWriter& writer, const std::vector<ProbeSpec>& 
   writer.append("/stats/substeps", substeps_.data(), count);
   writer.append("/stats/free_surface_particles", free_surface_.data(), count);
   writer.append("/stats/squeeze_film_particles", squeeze_film_.data(), count);
+  writer.append("/stats/retired_particles", retired_.data(), count);
   for (std::size_t k = 0; k < probes.size(); ++k) {
     std::vector<double> values(count);
     for (std::size_t r = 0; r < count; ++r) values[r] = probe_rows_[r * probes.size() + k];
@@ -44,7 +46,8 @@ void StepSeries::append_to(RunFileWriter& writer, const std::vector<ProbeSpec>& 
   for (auto* v : {&time_, &dt_, &ppe_residual_, &wall_seconds_, &kinetic_energy_,
                   &mechanical_energy_, &probe_rows_})
     v->clear();
-  for (auto* v : {&step_, &ppe_iterations_, &substeps_, &free_surface_, &squeeze_film_, &dt_limit_})
+  for (auto* v : {&step_, &ppe_iterations_, &substeps_, &free_surface_, &squeeze_film_, &retired_,
+                  &dt_limit_})
     v->clear();
 }
 

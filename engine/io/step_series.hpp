@@ -23,7 +23,7 @@ class StepSeries {
  private:
   std::vector<double> time_, dt_, ppe_residual_, wall_seconds_, kinetic_energy_, mechanical_energy_;
   std::vector<std::int64_t> step_, ppe_iterations_, substeps_, free_surface_, squeeze_film_,
-      dt_limit_;
+      retired_, dt_limit_;
   std::vector<double> probe_rows_;  // row-major, one value per probe
 };
 

@@ -138,8 +138,15 @@ const std::vector<ParameterInfo>& ParameterSet::engine_table() {
        "(docs/stability.md); 0 = off",
        d.wall_crossing_limit},
       {"periodic", "-", "periodic axes, e.g. \"x\" (needs domain_min and domain_max)", d.periodic},
+      {"escape_limit", "-",
+       "the domain guard: fluid particles that leave the domain are retired (kept in the "
+       "frames as kind 4, out of the flow: spray thrown over a wall); more than this fraction "
+       "of the fluid gone over the run stops it as unstable (docs/stability.md); 0 = the first "
+       "one stops it",
+       d.escape_limit},
       {"domain_min", "m",
-       "lower corner of the domain; particles leaving it stop the run; "
+       "lower corner of the domain; fluid leaving it is retired (escape_limit), a body "
+       "leaving it stops the run; "
        "empty = bounding box of the scene plus a margin",
        Vec{}},
       {"domain_max", "m", "upper corner of the domain", Vec{}},
@@ -377,6 +384,7 @@ SimulationParameters SimulationParameters::from(const ParameterSet& set) {
   p.energy_gain_limit = non_negative("energy_gain_limit");
   p.contact_overlap_limit = non_negative("contact_overlap_limit");
   p.wall_crossing_limit = non_negative("wall_crossing_limit");
+  p.escape_limit = non_negative("escape_limit");
   p.periodic = set.text("periodic");
   for (char c : p.periodic)
     if (c != 'x' && c != 'y' && c != 'z')

@@ -98,7 +98,8 @@ struct SimulationParameters {
   double energy_gain_limit = 0.1;      // energy guard tolerance, a fraction of M g H; 0: off
   double contact_overlap_limit = 0.5;  // contact guard: deepest overlap / d0; 0: off
   double wall_crossing_limit = 0.02;   // crossing guard: fluid fraction entering solids in a step
-  std::string periodic;                // axes, e.g. "x"
+  double escape_limit = 0.01;  // fluid fraction that may leave the domain (retired) over a run
+  std::string periodic;        // axes, e.g. "x"
   std::vector<double> domain_min, domain_max;
   int threads = 0;
   double max_particles = 5e7;  // refused above this estimate before allocating

@@ -134,6 +134,8 @@ RunSummary Simulation::run(const std::vector<RunObserver*>& observers,
   summary.mean_ppe_iterations = step_ > 0 ? double(total_ppe_iterations_) / step_ : 0.0;
   summary.wall_crossings = wall_crossings_;
   summary.gap_relocations = gap_relocations_;
+  summary.retired_particles = retired_.size();
+  summary.first_retirement = describe_first_retirement();
   summary.stage_seconds = timer_.totals();
   for (auto* o : observers) o->on_finish(*this, summary);
   return summary;

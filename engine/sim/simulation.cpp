@@ -357,12 +357,20 @@ void Simulation::solve_pressure(StepInProgress& now) {
 void Simulation::check_health(StepReport& report) {
   const std::size_t n = particles_.fluid_count;
   const int dim = particles_.dim;
+  const auto retired = static_cast<std::uint8_t>(ParticleKind::Retired);
+  // The retired stay where they left, at rest: whatever the step's stages gave them goes.
+  for (std::uint32_t i : retired_) {
+    for (int a = 0; a < 3; ++a) particles_.velocity[a][i] = 0.0;
+    particles_.pressure[i] = 0.0;
+  }
   // First offending particle (lowest index) of each kind, found in parallel.
-  std::size_t bad_value = n, too_fast = n, escaped = n;
+  std::size_t bad_value = n, too_fast = n, escaped = n, escaped_count = 0;
   double energy = 0.0;
   const double limit2 = max_speed_limit_ * max_speed_limit_;
-#pragma omp parallel for reduction(min : bad_value, too_fast, escaped) reduction(+ : energy)
+#pragma omp parallel for reduction(min : bad_value, too_fast, escaped) \
+    reduction(+ : energy, escaped_count)
   for (std::size_t i = 0; i < n; ++i) {
+    if (particles_.kind[i] == retired) continue;
     double s2 = 0.0;
     bool finite = true, outside = false;
     for (int a = 0; a < dim; ++a) {
@@ -373,7 +381,7 @@ void Simulation::check_health(StepReport& report) {
     }
     if (!finite) bad_value = std::min(bad_value, i);
     if (s2 > limit2) too_fast = std::min(too_fast, i);
-    if (outside) escaped = std::min(escaped, i);
+    if (outside) escaped = std::min(escaped, i), ++escaped_count;
     energy += 0.5 * ctx_.mass * s2;
   }
   report.kinetic_energy = energy;
@@ -391,10 +399,8 @@ void Simulation::check_health(StepReport& report) {
           << " m/s (limit max_speed = " << max_speed_limit_ << " m/s)";
     throw UnstableError(where.str());
   }
-  if (escaped < n) {
-    where << "particle " << escaped << " left the domain at " << format_point(particles_, escaped);
-    throw UnstableError(where.str());
-  }
+  if (escaped < n) retire_escaped_fluid(escaped, escaped_count, report);
+  report.retired_particles = retired_.size();
   for (std::size_t b = 0; bodies_ && b < bodies_->size(); ++b) {
     const Vec3& x = bodies_->state(b).position;
     for (int a = 0; a < dim; ++a)
@@ -406,6 +412,47 @@ void Simulation::check_health(StepReport& report) {
         throw UnstableError(where.str());
       }
   }
+}
+
+// The domain guard (docs/stability.md): fluid that leaves the domain, a drop squeezed out of a
+// closing gap or spray thrown over a wall, is retired, kept in its place as kind Retired and out
+// of the flow; a run losing more than escape_limit of its fluid so stops, since then the domain
+// or the flow is wrong, not a drop. The first retirement is kept for the summary.
+void Simulation::retire_escaped_fluid(std::size_t first, std::size_t count, StepReport& report) {
+  const std::size_t n = particles_.fluid_count;
+  const double limit = model_.params.escape_limit;
+  const double allowed = std::floor(limit * static_cast<double>(n));
+  if (static_cast<double>(retired_.size() + count) > allowed) {
+    std::ostringstream m;
+    m << "particle " << first << " left the domain at " << format_point(particles_, first);
+    if (count > 1) m << " (with " << count - 1 << " more this step)";
+    if (!retired_.empty()) m << ", after " << retired_.size() << " retired before";
+    m << ": more than escape_limit = " << limit << " of the " << n
+      << " fluid particles gone; is the domain (domain_min, domain_max) too small?";
+    throw UnstableError(m.str());
+  }
+  if (retired_.empty()) first_retirement_ = {report.time, report.step};
+  for (std::size_t i = 0; i < n; ++i) {
+    if (particles_.kind[i] != static_cast<std::uint8_t>(ParticleKind::Fluid)) continue;
+    bool outside = false;
+    for (int a = 0; a < particles_.dim; ++a)
+      outside = outside || particles_.position[a][i] < domain_lower_[a] ||
+                particles_.position[a][i] > domain_upper_[a];
+    if (!outside) continue;
+    particles_.kind[i] = static_cast<std::uint8_t>(ParticleKind::Retired);
+    for (int a = 0; a < 3; ++a) particles_.velocity[a][i] = 0.0;
+    particles_.pressure[i] = 0.0;
+    retired_.push_back(static_cast<std::uint32_t>(i));
+  }
+}
+
+std::string Simulation::describe_first_retirement() const {
+  if (retired_.empty()) return "";
+  std::ostringstream m;
+  m << "particle " << retired_.front() << " left the domain at "
+    << format_point(particles_, retired_.front()) << ", t = " << first_retirement_.time
+    << " s (step " << first_retirement_.step << ")";
+  return m.str();
 }
 
 const MovingWall* Simulation::motion_of_wall(std::size_t w) const {
@@ -433,7 +480,7 @@ void Simulation::evaluate_probes() {
       double top = -std::numeric_limits<double>::max();
 #pragma omp parallel for reduction(max : top)
       for (std::size_t i = 0; i < n; ++i) {
-        bool in_column = true;
+        bool in_column = particles_.kind[i] == static_cast<std::uint8_t>(ParticleKind::Fluid);
         for (int a = 0; a < prm.dim; ++a)
           if (a != up && std::abs(particles_.position[a][i] - probe.point[a]) > ctx_.d0)
             in_column = false;
@@ -446,7 +493,8 @@ void Simulation::evaluate_probes() {
       double front = -std::numeric_limits<double>::max();
 #pragma omp parallel for reduction(max : front)
       for (std::size_t i = 0; i < n; ++i)
-        if (particles_.density[i] > 0.5 * prm.rho0)
+        if (particles_.density[i] > 0.5 * prm.rho0 &&
+            particles_.kind[i] == static_cast<std::uint8_t>(ParticleKind::Fluid))
           front = std::max(front, particles_.position[probe.axis][i]);
       value = front + 0.5 * ctx_.d0;
     }

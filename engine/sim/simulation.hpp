@@ -47,6 +47,7 @@ struct StepReport {
   StepLimit dt_limit = StepLimit::dt_max;  // which limit set dt (time_step_limits.hpp)
   std::size_t particles_in_walls = 0;
   std::size_t squeeze_film_particles = 0;  // fluid in gaps narrower than 2 d0 at a body
+  std::size_t retired_particles = 0;       // fluid that left the domain so far (cumulative)
   long substeps = 0;          // rigid-body sub-steps in this step (0: the scene has no bodies)
   double wall_seconds = 0.0;  // cumulative
 };
@@ -63,9 +64,11 @@ struct RunSummary {
   double wall_seconds = 0.0;
   std::size_t fluid_particles = 0, boundary_particles = 0;
   double mean_ppe_iterations = 0.0;
-  long wall_crossings = 0;   // fluid particles found inside a wall, summed over steps
-  long gap_relocations = 0;  // of those, moved out of a closing gap (free_spot.hpp)
-  std::string output_path;   // where an observer keeps the run (RunObserver::kept_in)
+  long wall_crossings = 0;            // fluid particles found inside a wall, summed over steps
+  long gap_relocations = 0;           // of those, moved out of a closing gap (free_spot.hpp)
+  std::size_t retired_particles = 0;  // fluid that left the domain and was retired
+  std::string first_retirement;       // the first of them: which, where, when
+  std::string output_path;            // where an observer keeps the run (RunObserver::kept_in)
   std::vector<std::pair<std::string, double>> stage_seconds;
 };
 
@@ -152,6 +155,8 @@ class Simulation {
   double mechanical_energy() const;
   void check_energy(StepReport& report);
   void check_health(StepReport& report);
+  void retire_escaped_fluid(std::size_t first, std::size_t count, StepReport& report);
+  std::string describe_first_retirement() const;
   void push_out_of_solids(StepReport& report);  // solid_push_out.cpp
   void check_wall_crossings(std::size_t new_crossings, std::size_t first) const;
   // One step's values shared by its stages.
@@ -205,6 +210,11 @@ class Simulation {
   Vec3 domain_lower_, domain_upper_;
   long wall_crossings_ = 0;
   long gap_relocations_ = 0;
+  std::vector<std::uint32_t> retired_;  // fluid that left the domain, in the order it left
+  struct {
+    double time = 0.0;
+    long step = 0;
+  } first_retirement_;  // when the first of retired_ left, for the summary
   long total_ppe_iterations_ = 0;
   std::vector<double> probe_values_;
   StepReport last_report_;

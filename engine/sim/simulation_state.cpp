@@ -66,6 +66,13 @@ void Simulation::save_state(io::Checkpoint& c) const {
   c.numbers["wall_seconds"] = last_report_.wall_seconds;
   c.numbers["energy_initial"] = energy_budget_.initial();
   c.numbers["energy_work_bound"] = energy_budget_.work_bound();
+  // Fluid retired as it left the domain (the scene rebuilds their kind as fluid); absent when
+  // none left, as in checkpoints written before retirement existed.
+  if (!retired_.empty()) {
+    c.integers["retired_particles"].assign(retired_.begin(), retired_.end());
+    c.numbers["first_retirement_time"] = first_retirement_.time;
+    c.counts["first_retirement_step"] = first_retirement_.step;
+  }
   put_components(c, "position", p.position);
   put_components(c, "velocity", p.velocity);
   put_components(c, "normal", p.normal);  // bodies' normals turn with them
@@ -149,6 +156,18 @@ void Simulation::restore_state(const io::Checkpoint& c) {
                                 " does not have one value per fluid particle");
   }
   coupling_.set_warm_start(std::move(warm));
+  retired_.clear();
+  if (c.integers.count("retired_particles")) {
+    for (std::int64_t i : c.integer("retired_particles")) {
+      if (i < 0 || i >= static_cast<std::int64_t>(p.fluid_count))
+        throw io::CheckpointError("the checkpoint retires particle " + std::to_string(i) +
+                                  ", not a fluid particle of this scene");
+      p.kind[static_cast<std::size_t>(i)] = static_cast<std::uint8_t>(ParticleKind::Retired);
+      retired_.push_back(static_cast<std::uint32_t>(i));
+    }
+    first_retirement_ = {c.number("first_retirement_time"),
+                         static_cast<long>(c.count("first_retirement_step"))};
+  }
   if (bodies_) bodies_->restore_state(c);
 }
 

@@ -7,6 +7,7 @@
 #include <filesystem>
 #include <string>
 
+#include "engine/core/particle_view.hpp"
 #include "engine/io/run_file_reader.hpp"
 #include "reliability/run_washout.hpp"
 
@@ -70,10 +71,52 @@ TEST(Guards, RunawayVelocityNamesTheParticle) {
 }
 
 TEST(Guards, EscapingTheDomainNamesWhere) {
-  // The domain ends 2 cm beyond the column's foot: the surge leaves it.
+  // The domain ends 2 cm beyond the column's foot: the surge leaves it, far more than the
+  // escape_limit of 1 % of the 200 particles.
   const Fired f =
       run_dam_break("domain", {"end_time=0.2", "domain_min={-0.1,-0.1}", "domain_max={0.17,0.5}"});
   expect_fired(f, "left the domain at (");
+  EXPECT_NE(f.result.output.find("more than escape_limit = 0.01 of the 200 fluid particles gone"),
+            std::string::npos)
+      << f.result.output;
+}
+
+// With escape_limit = 1 the same surge flows out of the domain and the run goes on: the fluid
+// that left is retired (kind 4), parked where it left, at rest, counted per step in
+// /stats/retired_particles; none is lost from the file and none moves again.
+TEST(Guards, FluidLeavingTheDomainIsRetired) {
+  const Fired f = run_dam_break("retired", {"end_time=0.2", "domain_min={-0.1,-0.1}",
+                                            "domain_max={0.17,0.5}", "escape_limit=1"});
+  ASSERT_EQ(f.result.status, 0) << f.result.output;
+  EXPECT_NE(f.result.output.find("fluid particles retired as they left the domain: "),
+            std::string::npos)
+      << f.result.output;
+  io::RunFileReader file(f.file.string());
+  const auto retired_series = file.read_doubles("/stats/retired_particles");
+  ASSERT_FALSE(retired_series.empty());
+  const auto first = file.read_frame(0), last = file.read_frame(file.frame_count() - 1);
+  std::size_t retired = 0, fluid = 0, moved = 0;
+  for (std::size_t i = 0; i < last.kind.size(); ++i) {
+    if (last.kind[i] == 0) ++fluid;
+    if (last.kind[i] != static_cast<std::uint8_t>(ParticleKind::Retired)) continue;
+    ++retired;
+    EXPECT_EQ(first.kind[i], 0u);
+    EXPECT_GT(last.position[2 * i], 0.17);  // x beyond domain_max: where it left
+    EXPECT_EQ(last.velocity[2 * i], 0.0);
+    EXPECT_EQ(last.velocity[2 * i + 1], 0.0);
+  }
+  // A particle retired by the frame before the last has not moved since.
+  const auto before = file.read_frame(file.frame_count() - 2);
+  for (std::size_t i = 0; i < before.kind.size(); ++i)
+    if (before.kind[i] == static_cast<std::uint8_t>(ParticleKind::Retired))
+      moved += before.position[2 * i] != last.position[2 * i] ||
+               before.position[2 * i + 1] != last.position[2 * i + 1];
+  std::printf("%zu of 200 fluid particles retired by t = 0.2 s, %zu still fluid, %zu moved\n",
+              retired, fluid, moved);
+  EXPECT_GT(retired, 10u);
+  EXPECT_EQ(retired + fluid, 200u);
+  EXPECT_EQ(moved, 0u);
+  EXPECT_EQ(static_cast<std::size_t>(retired_series.back()), retired);
 }
 
 TEST(Guards, StalledPressureSolveSaysSo) {

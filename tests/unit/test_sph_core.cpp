@@ -90,6 +90,47 @@ TEST(NeighborGrid, MatchesBruteForce) {
     }
 }
 
+// Retired fluid (left the domain) is in no cell: it has no neighbours and is nobody's, the
+// others keep exactly their brute-force pairs among themselves, and one retired far away does
+// not stretch the grid.
+TEST(NeighborGrid, LeavesRetiredParticlesOut) {
+  const double box = 1.0, radius = 0.11;
+  Particles p = random_particles(2, 1500, box, 11);
+  std::size_t retired = 0;
+  for (std::size_t i = 0; i < p.size(); i += 7, ++retired)
+    p.kind[i] = static_cast<std::uint8_t>(ParticleKind::Retired);
+  p.position[0][0] = 1e9;  // a grid reaching it would have 1e10 cells: build() would refuse it
+  NeighborGrid grid;
+  grid.build(p, radius, PeriodicBox{});
+  NeighborList list;
+  grid.build_list(p, p.size(), radius, list);
+  const auto is_retired = [&](std::size_t i) {
+    return p.kind[i] == static_cast<std::uint8_t>(ParticleKind::Retired);
+  };
+  std::size_t mismatches = 0, pairs = 0, lists_of_retired = 0;
+  for (std::size_t i = 0; i < p.size(); ++i) {
+    const std::set<std::uint32_t> found(list.index.begin() + list.offset[i],
+                                        list.index.begin() + list.offset[i + 1]);
+    if (is_retired(i)) {
+      lists_of_retired += found.size();
+      continue;
+    }
+    for (std::size_t j = 0; j < p.size(); ++j) {
+      if (j == i) continue;
+      const double dx = p.position[0][i] - p.position[0][j],
+                   dy = p.position[1][i] - p.position[1][j];
+      const bool near = !is_retired(j) && dx * dx + dy * dy < radius * radius;
+      pairs += near;
+      mismatches += near != (found.count(static_cast<std::uint32_t>(j)) == 1);
+    }
+  }
+  std::printf("%zu retired of %zu: %zu pairs, %zu mismatches, %zu neighbours of the retired\n",
+              retired, p.size(), pairs, mismatches, lists_of_retired);
+  EXPECT_EQ(mismatches, 0u);
+  EXPECT_EQ(lists_of_retired, 0u);
+  EXPECT_GT(pairs, 1000u);
+}
+
 // A perfect lattice with the operators' lattice normalisation: the density of an interior
 // particle is rho0, the gradient of a linear field and the laplacian of a quadratic field are
 // exact at interior particles (to round-off), and close after a random perturbation.
