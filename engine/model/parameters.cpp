@@ -98,6 +98,11 @@ const std::vector<ParameterInfo>& ParameterSet::engine_table() {
        d.solver},
       {"solver_tolerance", "-", "relative residual |b - Ax| / |b| at which pcg and pcg_amg stop",
        d.solver_tolerance},
+      {"coupling_tolerance", "-",
+       "relative residual the dynamic bodies' pressure responses are first solved to (pcg, "
+       "pcg_amg); those whose share of the coupled pressure's residual then exceeds "
+       "solver_tolerance are solved again to what it asks (docs/bodies.md \"Coupling\")",
+       d.coupling_tolerance},
       {"solver_max_iterations", "-", "pcg and pcg_amg iteration limit; reaching it stops the run",
        double(d.solver_max_iterations)},
       {"pressure_gradient", "-",
@@ -360,6 +365,7 @@ SimulationParameters SimulationParameters::from(const ParameterSet& set) {
   p.smagorinsky_constant = non_negative("smagorinsky_constant");
   p.solver = one_of("solver", {"auto", "cholmod", "pcg", "pcg_amg"});
   p.solver_tolerance = positive("solver_tolerance");
+  p.coupling_tolerance = positive("coupling_tolerance");
   p.solver_max_iterations = integer("solver_max_iterations", positive("solver_max_iterations"));
   p.pressure_gradient = one_of("pressure_gradient", {"symmetric", "difference"});
   p.wall_pressure = one_of("wall_pressure", {"auto", "neumann", "dynamic"});

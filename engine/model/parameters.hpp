@@ -87,6 +87,7 @@ struct SimulationParameters {
   std::string solver = "auto";
   // The loosest tolerance that moves no validated figure (docs/performance.md).
   double solver_tolerance = 1e-6;
+  double coupling_tolerance = 1e-2;  // body coupling's response solves, first pass
   int solver_max_iterations = 5000;
   std::string pressure_gradient = "symmetric";
   std::string wall_pressure = "auto";

@@ -25,8 +25,15 @@ namespace washout {
 class RigidBodySystem;
 
 struct CouplingReport {
-  int solves = 0;       // extra pressure solves (one per body degree of freedom)
+  int solves = 0;       // extra pressure solves (one per body degree of freedom, plus re-solves)
   long iterations = 0;  // their iterations in all
+};
+
+// Relative residuals: the pressure solve's (solver_tolerance), and the one the response fields
+// are first solved to (coupling_tolerance; implicit_body_coupling.cpp says why it may be looser).
+struct CouplingTolerances {
+  double pressure = 1e-6;
+  double response = 1e-6;
 };
 
 class ImplicitBodyCoupling {
@@ -35,7 +42,8 @@ class ImplicitBodyCoupling {
   // bodies' fluid loads, p.pressure and work.wall_acceleration of the body particles.
   CouplingReport couple(const SphContext& ctx, const NeighborList& list, const NeighborGrid& grid,
                         Particles& p, FluidWork& work, LinearSolver& solver,
-                        RigidBodySystem& bodies, const Vec3& gravity, double dt);
+                        RigidBodySystem& bodies, const Vec3& gravity, double dt,
+                        const CouplingTolerances& tolerances);
 
   // The last step's response fields S_k per fluid particle: the warm start of the next solves,
   // part of a run's state (a checkpoint saves and restores them).
@@ -44,6 +52,7 @@ class ImplicitBodyCoupling {
 
  private:
   std::vector<std::vector<double>> response_, solution_;
+  std::vector<double> residual_;               // |B_k - A S_k| of each response
   std::vector<std::vector<double>> previous_;  // S_k per fluid particle, the next warm start
   std::vector<double> field_;
 };

@@ -281,8 +281,9 @@ void Simulation::run_stage(Stage stage, StepInProgress& now) {
       return;
     case Stage::body_loads:
       if (walls_.dynamic) {
-        const CouplingReport coupling = coupling_.couple(ctx_, neighbors_, grid_, particles_, work_,
-                                                         *solver_, *bodies_, prm.gravity, dt);
+        const CouplingReport coupling =
+            coupling_.couple(ctx_, neighbors_, grid_, particles_, work_, *solver_, *bodies_,
+                             prm.gravity, dt, {prm.solver_tolerance, prm.coupling_tolerance});
         total_ppe_iterations_ += coupling.iterations;
       } else {
         bodies_->compute_fluid_loads(ctx_, grid_, particles_, prm.gravity);

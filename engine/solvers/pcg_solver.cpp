@@ -89,11 +89,15 @@ class PcgSolver final : public LinearSolver {
 
   SolveReport solve(const CsrMatrix& A, const std::vector<double>& b,
                     std::vector<double>& x) override {
-    return iterate(A, b, x, false);
+    return iterate(A, b, x, false, tolerance_);
   }
   SolveReport solve_again(const CsrMatrix& A, const std::vector<double>& b,
                           std::vector<double>& x) override {
-    return iterate(A, b, x, true);
+    return iterate(A, b, x, true, tolerance_);
+  }
+  SolveReport solve_again_to(const CsrMatrix& A, const std::vector<double>& b,
+                             std::vector<double>& x, double tolerance) override {
+    return iterate(A, b, x, true, tolerance);
   }
 
  private:
@@ -112,7 +116,7 @@ class PcgSolver final : public LinearSolver {
   }
 
   SolveReport iterate(const CsrMatrix& A, const std::vector<double>& b, std::vector<double>& x,
-                      bool same_matrix) {
+                      bool same_matrix, double tolerance) {
     const std::size_t n = A.rows;
     x.resize(n, 0.0);
     SolveReport report;
@@ -131,7 +135,7 @@ class PcgSolver final : public LinearSolver {
     auto [rz, rr] = dots(r_, z_, r_);
     double r_norm = std::sqrt(rr);
     int it = 0;
-    while (r_norm > tolerance_ * b_norm && it < max_iterations_) {
+    while (r_norm > tolerance * b_norm && it < max_iterations_) {
       multiply(A, p_, q_);
       const double step = rz / dot(p_, q_);
 #pragma omp parallel for schedule(static) if (n > kParallelRows)
@@ -151,7 +155,7 @@ class PcgSolver final : public LinearSolver {
     preconditioner_->solved(it);
     report.iterations = it;
     report.relative_residual = r_norm / b_norm;
-    report.converged = r_norm <= tolerance_ * b_norm;
+    report.converged = r_norm <= tolerance * b_norm;
     return report;
   }
 

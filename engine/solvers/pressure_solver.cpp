@@ -26,6 +26,10 @@ class CountedSolver final : public LinearSolver {
                           std::vector<double>& x) override {
     return count(A, [&] { return inner_->solve_again(A, b, x); });
   }
+  SolveReport solve_again_to(const CsrMatrix& A, const std::vector<double>& b,
+                             std::vector<double>& x, double tolerance) override {
+    return count(A, [&] { return inner_->solve_again_to(A, b, x, tolerance); });
+  }
 
  private:
   template <class Solve>
