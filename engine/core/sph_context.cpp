@@ -21,6 +21,7 @@ SphContext::SphContext(int dim_, double d0_, double h_over_d0, double rho0_,
         if (i == 0 && j == 0 && k == 0) continue;
         const double r = d0 * std::sqrt(double(i * i + j * j + k * k));
         if (r >= 2.0 * h) continue;
+        ++full_support_neighbours;
         density += mass * kernel.value(r);
         const double minus_r_dot_grad = -kernel.derivative(r) * r;  // -(r . grad W) >= 0
         gradient_sum += volume * minus_r_dot_grad;

@@ -22,6 +22,7 @@ struct SphContext {
   // exact on the initial lattice: the summation density of an interior particle equals rho0, the
   // gradient of a linear field and the laplacian of a quadratic field are exact there.
   double full_support_density = 0.0;  // sum_j m W_ij including j = i
+  int full_support_neighbours = 0;    // lattice points within 2h, i excluded (20 in 2D, 56 in 3D)
   double gradient_correction = 1.0;
   double laplacian_correction = 1.0;
 

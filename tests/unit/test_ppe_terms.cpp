@@ -94,6 +94,43 @@ TEST(PpeTerms, SourceWithDensityInvarianceOnInteriorRowsOnly) {
   EXPECT_LT(worst_near_surface, 1e-10);
 }
 
+// Surface detection (free_surface.cpp): on a water block at rest the density alone decides, the
+// outer ring and no interior particle. A clump of spray squeezed to 0.3 d0 (four particles,
+// summation density above rho0) is also surface, by its sparse support: as interior rows it
+// would hang on weak links and take any pressure its compression asks.
+TEST(PpeTerms, SurfaceByDensityOrBySparseSupport) {
+  Block b(12, 12, 0, false, false);
+  detect_free_surface(b.ctx, b.list, b.p, 0.9, b.work);
+  std::size_t ring = 0, interior_marked = 0;
+  for (std::size_t i = 0; i < b.p.fluid_count; ++i) {
+    const int ix = static_cast<int>(i % 12), iy = static_cast<int>(i / 12);
+    const bool outer = ix == 0 || iy == 0 || ix == 11 || iy == 11;
+    ring += outer && b.work.free_surface[i];
+    interior_marked += ix >= 2 && iy >= 2 && ix <= 9 && iy <= 9 && b.work.free_surface[i];
+  }
+  EXPECT_EQ(ring, 44u);
+  EXPECT_EQ(interior_marked, 0u);
+
+  Particles clump;
+  clump.dim = 2;
+  for (const auto& x :
+       {Vec3(0, 0, 0), Vec3(0.3 * kD0, 0, 0), Vec3(0, 0.3 * kD0, 0), Vec3(0.3 * kD0, 0.3 * kD0, 0)})
+    clump.add(ParticleKind::Fluid, x, Vec3::Zero(), -1);
+  clump.fluid_count = 4;
+  NeighborGrid grid;
+  NeighborList list;
+  grid.build(clump, 2 * b.ctx.h, PeriodicBox{});
+  grid.build_list(clump, clump.size(), 2 * b.ctx.h, list);
+  compute_summation_density(b.ctx, list, clump);
+  FluidWork work;
+  detect_free_surface(b.ctx, list, clump, 0.9, work);
+  std::printf("clump of 4 at 0.3 d0: density %.3f rho0, %d of a full support's %d neighbours\n",
+              clump.density[0] / kRho0, 3, b.ctx.full_support_neighbours);
+  EXPECT_GT(clump.density[0], 0.9 * kRho0);  // the density alone would call it interior
+  EXPECT_EQ(b.ctx.full_support_neighbours, 20);
+  for (std::size_t i = 0; i < 4; ++i) EXPECT_EQ(work.free_surface[i], FluidWork::kSurface);
+}
+
 // Walls and surface together: water at rest on a floor, periodic along it, u* = dt g after the
 // predictor. The floor's Neumann condition dP/dn = (rho0/dt) u*.n = -rho0 g and the ghost
 // surface P = 0 at d0/2 above the top particles give P = rho0 g (H - y).
