@@ -117,6 +117,8 @@ CouplingReport ImplicitBodyCoupling::couple(const SphContext& ctx, const Neighbo
     for (double x : v) s += x * x;
     return std::sqrt(s);
   };
+  std::vector<double> response_norm(columns);
+  for (int k = 0; k < columns; ++k) response_norm[k] = norm(response_[k]);
   // Solves S_k to a relative residual `tolerance`; residual_[k] = |B_k - A S_k|.
   const auto solve_response = [&](int k, double tolerance) {
     auto& x = solution_[k];
@@ -126,7 +128,7 @@ CouplingReport ImplicitBodyCoupling::couple(const SphContext& ctx, const Neighbo
                           std::to_string(solve.iterations) + " iterations");
     ++report.solves;
     report.iterations += solve.iterations;
-    residual_[k] = solve.relative_residual * norm(response_[k]);
+    residual_[k] = solve.relative_residual * response_norm[k];
   };
   for (int k = 0; k < columns; ++k) {
     auto& x = solution_[k];
@@ -158,7 +160,7 @@ CouplingReport ImplicitBodyCoupling::couple(const SphContext& ctx, const Neighbo
       stale[k] = share > allowed / columns;
       if (!stale[k]) continue;
       // Half of the share it may have: dxi moves a little with the better S_k.
-      solve_response(k, 0.5 * allowed / (columns * std::abs(dxi[k]) * norm(response_[k])));
+      solve_response(k, 0.5 * allowed / (columns * std::abs(dxi[k]) * response_norm[k]));
       refined = true;
     }
     if (!refined) break;

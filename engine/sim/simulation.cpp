@@ -96,12 +96,10 @@ Simulation::Simulation(Model model)
     if (!prm.domain_max.empty()) domain_upper_[a] = prm.domain_max[a];
   }
   for (std::size_t i = 0; i < particles_.fluid_count; ++i)
-    for (int a = 0; a < prm.dim; ++a)
-      if (particles_.position[a][i] < domain_lower_[a] ||
-          particles_.position[a][i] > domain_upper_[a])
-        throw SceneError("fluid particle at " + format_point(particles_, i) +
-                             " starts outside the domain (domain_min/domain_max)",
-                         model_.scene_path, "domain_min");
+    if (!inside_domain(particles_.x(i)))
+      throw SceneError("fluid particle at " + format_point(particles_, i) +
+                           " starts outside the domain (domain_min/domain_max)",
+                       model_.scene_path, "domain_min");
   const double g = prm.gravity.norm();
   max_speed_limit_ =
       prm.max_speed > 0 ? prm.max_speed : std::max(10.0 * std::sqrt(2.0 * g * extent), 10.0);
@@ -373,16 +371,15 @@ void Simulation::check_health(StepReport& report) {
   for (std::size_t i = 0; i < n; ++i) {
     if (particles_.kind[i] == retired) continue;
     double s2 = 0.0;
-    bool finite = true, outside = false;
+    bool finite = true;
     for (int a = 0; a < dim; ++a) {
       const double u = particles_.velocity[a][i], x = particles_.position[a][i];
       finite = finite && std::isfinite(u) && std::isfinite(x);
-      outside = outside || x < domain_lower_[a] || x > domain_upper_[a];
       s2 += u * u;
     }
     if (!finite) bad_value = std::min(bad_value, i);
     if (s2 > limit2) too_fast = std::min(too_fast, i);
-    if (outside) escaped = std::min(escaped, i), ++escaped_count;
+    if (!inside_domain(particles_.x(i))) escaped = std::min(escaped, i), ++escaped_count;
     energy += 0.5 * ctx_.mass * s2;
   }
   report.kinetic_energy = energy;
@@ -404,14 +401,13 @@ void Simulation::check_health(StepReport& report) {
   report.retired_particles = retired_.size();
   for (std::size_t b = 0; bodies_ && b < bodies_->size(); ++b) {
     const Vec3& x = bodies_->state(b).position;
-    for (int a = 0; a < dim; ++a)
-      if (x[a] < domain_lower_[a] || x[a] > domain_upper_[a]) {
-        where << "body '" << bodies_->name(b) << "' left the domain: its centre of mass is at ("
-              << x.x() << ", " << x.y();
-        if (dim == 3) where << ", " << x.z();
-        where << ") m";
-        throw UnstableError(where.str());
-      }
+    if (!inside_domain(x)) {
+      where << "body '" << bodies_->name(b) << "' left the domain: its centre of mass is at ("
+            << x.x() << ", " << x.y();
+      if (dim == 3) where << ", " << x.z();
+      where << ") m";
+      throw UnstableError(where.str());
+    }
   }
 }
 
@@ -434,17 +430,20 @@ void Simulation::retire_escaped_fluid(std::size_t first, std::size_t count, Step
   }
   if (retired_.empty()) first_retirement_ = {report.time, report.step};
   for (std::size_t i = 0; i < n; ++i) {
-    if (particles_.kind[i] != static_cast<std::uint8_t>(ParticleKind::Fluid)) continue;
-    bool outside = false;
-    for (int a = 0; a < particles_.dim; ++a)
-      outside = outside || particles_.position[a][i] < domain_lower_[a] ||
-                particles_.position[a][i] > domain_upper_[a];
-    if (!outside) continue;
+    if (particles_.kind[i] != static_cast<std::uint8_t>(ParticleKind::Fluid) ||
+        inside_domain(particles_.x(i)))
+      continue;
     particles_.kind[i] = static_cast<std::uint8_t>(ParticleKind::Retired);
     for (int a = 0; a < 3; ++a) particles_.velocity[a][i] = 0.0;
     particles_.pressure[i] = 0.0;
     retired_.push_back(static_cast<std::uint32_t>(i));
   }
+}
+
+bool Simulation::inside_domain(const Vec3& x) const {
+  for (int a = 0; a < particles_.dim; ++a)
+    if (x[a] < domain_lower_[a] || x[a] > domain_upper_[a]) return false;
+  return true;
 }
 
 std::string Simulation::describe_first_retirement() const {

@@ -157,6 +157,8 @@ class Simulation {
   void check_health(StepReport& report);
   void retire_escaped_fluid(std::size_t first, std::size_t count, StepReport& report);
   std::string describe_first_retirement() const;
+  // Within [domain_min, domain_max] along the scene's axes.
+  bool inside_domain(const Vec3& x) const;
   void push_out_of_solids(StepReport& report);  // solid_push_out.cpp
   void check_wall_crossings(std::size_t new_crossings, std::size_t first) const;
   // One step's values shared by its stages.

@@ -110,11 +110,6 @@ double Simulation::distance_to_solids(const Vec3& x) const {
 void Simulation::move_out_of_gap(std::size_t i) {
   const int dim = particles_.dim;
   const double d0 = ctx_.d0;
-  auto inside_domain = [&](const Vec3& y) {
-    for (int a = 0; a < dim; ++a)
-      if (y[a] < domain_lower_[a] || y[a] > domain_upper_[a]) return false;
-    return true;
-  };
   // A free place must also have fluid within the kernel support: the far side of a wall (as
   // thick as the support) is clear of solids too, but out of the fluid's reach.
   auto clear_of_solids = [&](const Vec3& y) {
