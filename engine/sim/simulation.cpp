@@ -332,7 +332,7 @@ void Simulation::run_stage(Stage stage, StepInProgress& now) {
 
 void Simulation::solve_pressure(StepInProgress& now) {
   const auto& prm = model_.params;
-  const std::string wanted = resolve_solver(prm.solver, prm.dim, now.ppe.unknowns);
+  const std::string wanted = resolve_solver(prm.solver, prm.dim, now.ppe.unknowns, walls_.dynamic);
   if (!solver_ || solver_->name() != wanted)
     solver_ = make_solver(wanted, prm.solver_tolerance, prm.solver_max_iterations);
   gather_pressure_guess(particles_, work_);
