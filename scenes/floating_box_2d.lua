@@ -16,7 +16,6 @@ local P = washout.parameters {
   d0 = 0.01,              -- box height / 10; the tests also run d0 = 0.005
   end_time = 3.0,
   output_interval = 0.05,
-  wall_slip = 0.65,
   scene = {
     box_width = 0.2,      -- B [m]
     box_height = 0.1,     -- H [m]

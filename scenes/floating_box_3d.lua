@@ -10,7 +10,6 @@ local P = washout.parameters {
   d0 = 0.02,              -- box height / 5; the long test runs d0 = 0.01
   end_time = 2.0,
   output_interval = 0.1,
-  wall_slip = 0.65,
   scene = {
     box_width = 0.2,      -- B, along x and y [m]
     box_height = 0.1,     -- H [m]

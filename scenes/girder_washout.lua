@@ -14,7 +14,6 @@ local P = washout.parameters {
   end_time = 1.5,         -- the girder is off the pier by about 0.85 s and 0.8 m downstream at
                           -- 1.5 s; the run also stops when it leaves the observation window
   output_interval = 0.05,
-  wall_slip = flume.wall_slip,  -- [paper] 65 % slip
   scene = flume.defaults(),
 }
 

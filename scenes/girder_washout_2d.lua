@@ -15,7 +15,6 @@ local P = washout.parameters {
   end_time = 2.0,         -- off the pier by 0.61-0.73 s, then carried 1.5-2 m down the channel;
                           -- the run stops early if the girder leaves the observation window
   output_interval = 0.02,
-  wall_slip = flume.wall_slip,  -- [paper] 65 % slip
   scene = flume.defaults(),
 }
 

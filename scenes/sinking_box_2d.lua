@@ -18,7 +18,6 @@ local P = washout.parameters {
   d0 = 0.005,
   end_time = 1.5,
   output_interval = 0.05,
-  wall_slip = 0.65,
   shifting = 0.5,
   scene = {
     box_width = 0.08,     -- [m]

@@ -9,7 +9,6 @@ local P = washout.parameters {
   d0 = 0.01,
   end_time = 0.3,
   output_interval = 0.1,
-  wall_slip = 0.65,
   scene = {
     shape = "box",        -- "box" or "disc"
     size = 0.1,           -- box side or disc diameter [m]

@@ -69,7 +69,6 @@ flume.pier_material = { name = "pier", E = 5.0e9, nu = 0.28, eps = 0.8 }
 flume.wall_material = { name = "glass", E = 5.0e9, nu = 0.28, eps = 0.8 }
 flume.mu_girder_pier = 0.05  -- [paper]
 flume.mu_girder_wall = 0.0   -- [paper]
-flume.wall_slip = 0.65       -- [paper] all walls 65 % slip
 
 local lattice_unit = 0.06  -- every pier and girder dimension is a multiple of this (see above)
 
@@ -203,32 +202,32 @@ function flume.build(P)
   if P.dim == 2 then
     washout.fluid { washout.box { min = { 0, 0 }, max = { x_gate, H } } }
     washout.wall { tank.open_box(P, { min = { 0, 0 }, max = { L, Hw } }), name = "flume",
-                   material = glass, slip = flume.wall_slip }
+                   material = glass }
     washout.moving_wall { washout.box { min = { x_gate, 0 }, max = { x_gate + t_gate, Hw } },
-                          name = "gate", slip = flume.wall_slip,
+                          name = "gate",
                           motion = function(t) return { 0, lift(t) } end }
     washout.wall { washout.box { min = { px0, 0 }, max = { px1, gz0 } }, name = "pier",
-                   material = pier_mat, slip = flume.wall_slip }
+                   material = pier_mat }
     out.girder = { min = { gx0, gz0 }, max = { gx1, gz1 } }
     washout.body { washout.box(out.girder), name = "girder", density = P.girder_density,
-                   material = pla, slip = flume.wall_slip }
+                   material = pla }
     out.girder_centre = { 0.5 * (gx0 + gx1), 0.5 * (gz0 + gz1) }
   else
     local W = P.flume_width
     local py0 = 0.5 * (W - P.pier_width)
     washout.fluid { washout.box { min = { 0, 0, 0 }, max = { x_gate, W, H } } }
     washout.wall { tank.open_box(P, { min = { 0, 0, 0 }, max = { L, W, Hw } }), name = "flume",
-                   material = glass, slip = flume.wall_slip }
+                   material = glass }
     washout.moving_wall { washout.box { min = { x_gate, 0, 0 }, max = { x_gate + t_gate, W, Hw } },
-                          name = "gate", slip = flume.wall_slip,
+                          name = "gate",
                           motion = function(t) return { 0, 0, lift(t) } end }
     washout.wall { washout.box { min = { px0, py0, 0 }, max = { px1, py0 + P.pier_width, gz0 } },
-                   name = "pier", material = pier_mat, slip = flume.wall_slip }
+                   name = "pier", material = pier_mat }
     -- [assumption] The girder spans the flume from glass wall to glass wall, touching both
     -- (the paper's girder-wall friction 0.0 is for its ends sliding on the glass).
     out.girder = { min = { gx0, 0, gz0 }, max = { gx1, W, gz1 } }
     washout.body { washout.box(out.girder), name = "girder", density = P.girder_density,
-                   material = pla, slip = flume.wall_slip, angle_axis = "y" }
+                   material = pla, angle_axis = "y" }
     out.girder_centre = { 0.5 * (gx0 + gx1), 0.5 * W, 0.5 * (gz0 + gz1) }
     out.centre_y = 0.5 * W
   end

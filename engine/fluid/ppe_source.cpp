@@ -3,10 +3,53 @@
 // The divergence is the difference form over the fluid neighbours; the wall's share of it is
 // what the Neumann condition imposes (ppe_wall_condition.cpp), except with dynamic walls, where
 // the wall's own velocity enters the divergence.
+#include <algorithm>
+#include <cmath>
+#include <limits>
+
 #include "engine/core/sph_operators.hpp"
 #include "engine/fluid/pressure_poisson_parts.hpp"
 
 namespace washout {
+namespace {
+
+// The dynamic wall's markers also hold the wall's clearance near the free surface, where the
+// density-invariance term is off: a particle closer than d0/2 to the nearest wall's surface
+// meets that wall's markers coming back at half the shortfall per step.
+// The mirrored velocity only stops an approach; without this the bottom particles of a thin
+// flow on a no-slip floor settle towards it (to a fortieth of a spacing at a/20) and, where the
+// flow hits a wall, are driven through the floor. The nearest wall particle gives the wall, and
+// its face's markers (normals within 60 degrees of its own) push.
+constexpr double kClearanceRelaxation = 0.5;  // share of the shortfall closed in a step
+
+struct WallClearance {
+  std::size_t wall = std::numeric_limits<std::size_t>::max();  // nearest wall particle
+  double speed = 0.0;                                          // marker's extra normal speed
+};
+
+WallClearance wall_clearance(const SphContext& ctx, const NeighborList& list, const Particles& p,
+                             std::size_t i, double dt) {
+  const std::size_t n = p.fluid_count;
+  WallClearance c;
+  double nearest_r2 = std::numeric_limits<double>::max();
+  for (std::uint64_t k = list.offset[i]; k < list.offset[i + 1]; ++k) {
+    const std::size_t w = list.index[k];
+    if (w < n) continue;
+    double d[3];
+    ctx.displacement(p, i, w, d);
+    const double r2 = d[0] * d[0] + d[1] * d[1] + d[2] * d[2];
+    if (r2 < nearest_r2) nearest_r2 = r2, c.wall = w;
+  }
+  if (c.wall == std::numeric_limits<std::size_t>::max()) return c;
+  // The distance to the nearest wall particle less its depth: exact straight above it, longer
+  // beside it (so never a false alarm), and blind to the particle's normal, which beside a
+  // corner can point along the diagonal.
+  const double y = std::sqrt(nearest_r2) - p.wall_distance[c.wall];
+  if (y < 0.5 * ctx.d0) c.speed = kClearanceRelaxation * (0.5 * ctx.d0 - std::max(y, 0.0)) / dt;
+  return c;
+}
+
+}  // namespace
 
 void subtract_ppe_source(const SphContext& ctx, const NeighborList& list, const Particles& p,
                          const WallConditions& walls, const Vec3& gravity, double alpha, double dt,
@@ -18,6 +61,11 @@ void subtract_ppe_source(const SphContext& ctx, const NeighborList& list, const 
     const std::int32_t row = work.unknown[i];
     if (row < 0) continue;
     const double u_i[3] = {work.u_star[0][i], work.u_star[1][i], work.u_star[2][i]};
+    // Near the surface, where the density-invariance term is off (below), nothing else holds
+    // the wall's clearance; inside, that term does.
+    const bool near_surface = flags.touches_surface[row] != 0;
+    const WallClearance clearance =
+        walls.dynamic && near_surface ? wall_clearance(ctx, list, p, i, dt) : WallClearance{};
     const double div_u =
         divergence(ctx, list, p, i, u_i, [&](const NeighborPair& q, double u_j[3]) {
           const std::size_t j = q.j;
@@ -33,6 +81,13 @@ void subtract_ppe_source(const SphContext& ctx, const NeighborList& list, const 
             for (int a = 0; a < ctx.dim; ++a)
               marker_un +=
                   (work.boundary.marker_velocity[a][j] - p.velocity[a][j]) * p.normal[a][j];
+            // The wall's clearance (above): its face's markers come back at the shortfall.
+            if (clearance.speed > 0.0) {
+              double facing = 0.0;
+              for (int a = 0; a < ctx.dim; ++a)
+                facing += p.normal[a][j] * p.normal[a][clearance.wall];
+              if (facing > 0.5) marker_un += clearance.speed;
+            }
             for (int a = 0; a < ctx.dim; ++a)
               u_j[a] = p.velocity[a][j] + marker_un * p.normal[a][j] + dt * gravity[a];
           } else {
@@ -42,8 +97,7 @@ void subtract_ppe_source(const SphContext& ctx, const NeighborList& list, const 
     // Within a kernel support of the free surface the summation density is low only because the
     // support is truncated, not because the fluid expanded: the density-invariance term would
     // read that deficit as an error and pull the surface in. It acts on interior particles only.
-    const double density_error =
-        flags.touches_surface[row] ? 0.0 : (ctx.rho0 - p.density[i]) / ctx.rho0;
+    const double density_error = near_surface ? 0.0 : (ctx.rho0 - p.density[i]) / ctx.rho0;
     work.rhs[row] -= ctx.rho0 / dt * div_u + density_scale * density_error;
   }
 }

@@ -77,16 +77,19 @@ const std::vector<ParameterInfo>& ParameterSet::engine_table() {
       {"dt_max", "s", "largest adaptive step", d.dt_max},
       {"dt_min", "s", "an adaptive step below this stops the run as unstable", d.dt_min},
       {"end_time", "s", "simulated time at which the run ends", d.end_time},
-      {"wall_slip", "-", "default wall slip ratio: 0 no-slip, 1 free-slip (paper: 0.65)",
+      {"wall_slip", "-",
+       "default wall slip ratio: 0 no-slip, 1 free-slip (the paper's 0.65 stood in for the "
+       "wall friction that log_law now models)",
        d.wall_slip},
       {"wall_friction", "-",
        "\"log_law\": the first fluid layer at a wall feels the smooth-wall law-of-the-wall "
        "stress the resolved viscous term misses, times (1 - wall_slip); \"none\": viscous "
-       "stress only (default: it moves the dam-break front by about 0.01 a, docs/method.md)",
+       "stress only (docs/method.md)",
        d.wall_friction},
       {"wall_layers", "-", "wall particle layers; 0 = enough to fill the kernel support",
        double(d.wall_layers)},
-      {"turbulence", "-", "\"none\" or \"smagorinsky\" (sub-particle-scale eddy viscosity)",
+      {"turbulence", "-",
+       "\"smagorinsky\" (sub-particle-scale eddy viscosity) or \"none\" (laminar flows)",
        d.turbulence},
       {"smagorinsky_constant", "-", "C_s of the Smagorinsky model (nu_t = (C_s d0)^2 |S|)",
        d.smagorinsky_constant},
@@ -112,7 +115,8 @@ const std::vector<ParameterInfo>& ParameterSet::engine_table() {
       {"wall_pressure", "-",
        "wall condition of the PPE: \"neumann\" (dP/dn from the fluid's relative velocity), "
        "\"dynamic\" (walls in the divergence, dP/dn = rho0 (g - a_wall).n; solves dynamic "
-       "bodies with the pressure) or \"auto\" (dynamic when the scene has dynamic bodies)",
+       "bodies with the pressure) or \"auto\" (dynamic when the scene has dynamic bodies, "
+       "neumann otherwise: the default before the seventh session)",
        d.wall_pressure},
       {"shifting", "-",
        "fixed particle shifting A: delta r = -A h^2 grad C each step (Lind et al. 2012); 0 = off",

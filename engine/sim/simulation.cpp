@@ -69,8 +69,7 @@ Simulation::Simulation(Model model)
   }
   inside_wall_.assign(particles_.fluid_count, 0);
   // "auto": the dynamic wall condition where the scene has dynamic bodies (their velocities are
-  // then solved with the pressure); the Neumann form otherwise, which keeps still water and
-  // dam-break fronts slightly closer to the references (docs/method.md).
+  // then solved with the pressure), the Neumann form otherwise (docs/method.md).
   bool dynamic_bodies = false;
   for (std::size_t b = 0; bodies_ && b < bodies_->size(); ++b) {
     solved_bodies_.push_back(bodies_->dynamic(b));
@@ -78,6 +77,7 @@ Simulation::Simulation(Model model)
   }
   walls_.dynamic = model_.params.wall_pressure == "dynamic" ||
                    (model_.params.wall_pressure == "auto" && dynamic_bodies);
+  body_coupled_ = walls_.dynamic && dynamic_bodies;
 
   // Domain: given, or the scene's bounding box with a generous margin (for blow-up detection).
   const auto& prm = model_.params;
@@ -332,7 +332,7 @@ void Simulation::run_stage(Stage stage, StepInProgress& now) {
 
 void Simulation::solve_pressure(StepInProgress& now) {
   const auto& prm = model_.params;
-  const std::string wanted = resolve_solver(prm.solver, prm.dim, now.ppe.unknowns, walls_.dynamic);
+  const std::string wanted = resolve_solver(prm.solver, prm.dim, now.ppe.unknowns, body_coupled_);
   if (!solver_ || solver_->name() != wanted)
     solver_ = make_solver(wanted, prm.solver_tolerance, prm.solver_max_iterations);
   gather_pressure_guess(particles_, work_);

@@ -188,6 +188,7 @@ class Simulation {
   ImplicitBodyCoupling coupling_;
   std::array<std::vector<double>, 3> previous_wall_velocity_;  // for the wall acceleration
   std::vector<std::uint8_t> solved_bodies_;  // 1: a dynamic body, its velocity solved by coupling_
+  bool body_coupled_ = false;  // dynamic bodies solved with the pressure (dynamic walls)
   std::unique_ptr<LinearSolver> solver_;
   std::vector<MovingWall> moving_walls_;
   std::unique_ptr<RigidBodySystem> bodies_;

@@ -65,10 +65,10 @@ std::unique_ptr<LinearSolver> make_amg_pcg_solver(double tolerance, int max_iter
                                                   const AmgOptions& options = {});
 
 // The solver a run uses, by the `solver` parameter: "cholmod", "pcg", "pcg_amg", or "auto",
-// resolved by the dimension, the number of unknowns and whether the walls are dynamic (dynamic
-// bodies solved with the pressure; docs/parameters.md).
+// resolved by the dimension, the number of unknowns and whether dynamic bodies are solved with
+// the pressure (docs/parameters.md).
 std::string resolve_solver(const std::string& requested, int dim, std::size_t unknowns,
-                           bool dynamic_walls);
+                           bool body_coupled);
 // The BoomerAMG settings make_solver gives "pcg_amg": AmgOptions{} unless a benchmark changed
 // them (bench_case --amg-reuse).
 AmgOptions& default_amg_options();

@@ -62,14 +62,14 @@ void set_system_observer(SystemObserver o) { observer = std::move(o); }
 const SystemObserver& system_observer() { return observer; }
 
 std::string resolve_solver(const std::string& requested, int dim, std::size_t unknowns,
-                           bool dynamic_walls) {
+                           bool body_coupled) {
   if (requested != "auto") return requested;
   // By the comparison in docs/performance.md ("The default"): BoomerAMG CG for 2D fluid alone
   // (3x faster than CHOLMOD at 3,200 unknowns, the same front to four digits); CHOLMOD's exact
   // solve for small 2D systems coupled to dynamic bodies (their landing steps are sensitive to
   // an inexact solve at 1e-6); Jacobi CG for small 3D ones, where its iterations are few and
   // BoomerAMG's set-up does not pay, and BoomerAMG CG above.
-  if (dim == 2) return dynamic_walls && unknowns <= 60000 ? "cholmod" : "pcg_amg";
+  if (dim == 2) return body_coupled && unknowns <= 60000 ? "cholmod" : "pcg_amg";
   return unknowns < 50000 ? "pcg" : "pcg_amg";
 }
 

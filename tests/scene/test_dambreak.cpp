@@ -67,8 +67,10 @@ FrontResult run_front(const std::string& scene, const std::string& test_name, co
 // al.'s, from a column as high, 0.097 m; docs/method.md), so the error does not fall with d0
 // and these are regression bounds: what washout measures now with a margin of about 20 %.
 // At a/d0 = 10 the surge is two particles thick and its tip lags (P = 0 is imposed d0/2
-// beyond the surface particles, which at a two-particle tip slows it): measured 0.156, mean
-// -0.136 in 2D; 0.199, mean -0.175 in 3D. At a/d0 = 20 it leads: 0.147, mean +0.13.
+// beyond the surface particles, which at a two-particle tip slows it) and, since the seventh
+// session's defaults, the law-of-the-wall friction slows a surge that shallow further:
+// measured 0.144 in 2D; 0.243, mean -0.22 in 3D (0.199 without the friction). At a/d0 = 20
+// it leads: 0.131, mean +0.12.
 TEST(DamBreak, Front2dCoarse) {
   const auto r =
       run_front("dambreak_2d.lua", "dambreak_2d_a10", "2D, a/d0 = 10", {{"d0", "0.0146"}});
@@ -80,13 +82,16 @@ TEST(DamBreak, Front2dDefault) {
   const auto r = run_front("dambreak_2d.lua", "dambreak_2d_a20", "2D, a/d0 = 20", {});
   EXPECT_LT(r.rms, 0.25);
   EXPECT_GT(r.mean, 0.0);  // the front runs early, as in the other SPH codes
-  EXPECT_EQ(r.wall_crossings, 0);
+  // A particle of the one-particle film behind the tip has P = 0 and no density-invariance
+  // term to hold it off the floor, so it may touch the floor and be put back (one, at the last
+  // step, with the seventh session's defaults); a row of them would mean a leaking wall.
+  EXPECT_LE(r.wall_crossings, 2);
 }
 
 TEST(DamBreak, Front3dCoarse) {
   const auto r =
       run_front("dambreak_3d.lua", "dambreak_3d_a10", "3D, a/d0 = 10", {{"d0", "0.0146"}});
-  EXPECT_LT(r.rms, 0.24);
+  EXPECT_LT(r.rms, 0.29);
 }
 
 // Potential flow of an instantaneous release at t = 0+ (Pohle 1952), written here from the

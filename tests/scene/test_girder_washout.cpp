@@ -113,8 +113,11 @@ TEST(GirderWashout, LowAndHighColumn2d) {
     EXPECT_GT(r.leave_time, r.arrival_time);
     EXPECT_GT(w->x_end, 0.1 * 2 * kGirderHalfWidth);
     EXPECT_GT(std::abs(r.peak_angle), 10.0 * std::numbers::pi / 180);
-    // The wave pushes downstream: the largest horizontal fluid force points along +x.
-    EXPECT_GT(r.peak_force_horizontal, 0.0);
+    // The wave pushes downstream: the largest horizontal fluid force, averaged over the 10 ms
+    // windows that compare across resolutions, points along +x. (Step by step, the water caught
+    // under the landing girder can push it back harder for a step or two: -224 N/m at 0.25 m
+    // with the seventh session's walls, at the landing.)
+    EXPECT_GT(r.peak_force_horizontal_windowed, 0.0);
     // No fluid particle is ever inside the pier or the girder. (Particles found inside a wall
     // at the end of a step are put back and counted; the count covers the gate too, where
     // particles squeeze under its rising edge: printed above, not bounded here.)
