@@ -20,6 +20,7 @@ namespace {
 // flow on a no-slip floor settle towards it (to a fortieth of a spacing at a/20) and, where the
 // flow hits a wall, are driven through the floor. The nearest wall particle gives the wall, and
 // its face's markers (normals within 60 degrees of its own) push.
+constexpr double kClearance = 0.4;  // [d0]: the lattice's d0/2 less a margin for its noise
 constexpr double kClearanceRelaxation = 0.5;  // share of the shortfall closed in a step
 
 struct WallClearance {
@@ -45,7 +46,8 @@ WallClearance wall_clearance(const SphContext& ctx, const NeighborList& list, co
   // beside it (so never a false alarm), and blind to the particle's normal, which beside a
   // corner can point along the diagonal.
   const double y = std::sqrt(nearest_r2) - p.wall_distance[c.wall];
-  if (y < 0.5 * ctx.d0) c.speed = kClearanceRelaxation * (0.5 * ctx.d0 - std::max(y, 0.0)) / dt;
+  if (y < kClearance * ctx.d0)
+    c.speed = kClearanceRelaxation * (kClearance * ctx.d0 - std::max(y, 0.0)) / dt;
   return c;
 }
 

@@ -96,8 +96,8 @@ const std::vector<ParameterInfo>& ParameterSet::engine_table() {
       {"solver", "-",
        "pressure solver: \"cholmod\" (direct), \"pcg\" (Jacobi-preconditioned CG, warm-started), "
        "\"pcg_amg\" (CG preconditioned by a BoomerAMG V-cycle, warm-started), "
-       "\"auto\" (2D: pcg_amg, but cholmod up to 60000 unknowns where dynamic bodies are solved "
-       "with the pressure; 3D: pcg below 50000 unknowns, pcg_amg from 50000; "
+       "\"auto\" (2D: pcg_amg, but cholmod up to 1000 unknowns, and up to 60000 where dynamic "
+       "bodies are solved with the pressure; 3D: pcg below 50000 unknowns, pcg_amg from 50000; "
        "docs/performance.md)",
        d.solver},
       {"solver_tolerance", "-", "relative residual |b - Ax| / |b| at which pcg and pcg_amg stop",
