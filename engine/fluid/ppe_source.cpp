@@ -14,8 +14,9 @@ namespace washout {
 namespace {
 
 // The dynamic wall's markers also hold the wall's clearance near the free surface, where the
-// density-invariance term is off: a particle closer than d0/2 to the nearest wall's surface
-// meets that wall's markers coming back at half the shortfall per step.
+// density-invariance term is off: a particle closer than 0.4 d0 to the nearest wall's surface
+// meets that wall's markers coming back at half the shortfall per step. (The lattice puts the
+// first layer at d0/2; holding that exactly fed the noise of still water.)
 // The mirrored velocity only stops an approach; without this the bottom particles of a thin
 // flow on a no-slip floor settle towards it (to a fortieth of a spacing at a/20) and, where the
 // flow hits a wall, are driven through the floor. The nearest wall particle gives the wall, and
