@@ -2,6 +2,8 @@
 // The stages of one stabilized-ISPH step (METHOD.md "One time step"), one function per
 // equation, each implemented in the file named after it. The Simulation composes them.
 #include <cstddef>
+#include <cstdint>
+#include <limits>
 
 #include "engine/core/neighbor_grid.hpp"
 #include "engine/core/sph_context.hpp"
@@ -53,6 +55,28 @@ PpeStatistics assemble_pressure_poisson(const SphContext& ctx, const NeighborLis
 void scatter_pressure(const FluidWork& work, Particles& p);
 // Initial guess for an iterative solve: the previous pressure of each unknown.
 void gather_pressure_guess(const Particles& p, FluidWork& work);
+
+// The boundary particle nearest to fluid particle i among its neighbours (and its squared
+// distance), or none (index p.size()) if it sees none; bodies' particles left out if asked.
+// Its plane stands for the wall's surface in the wall shear and the wall's clearance.
+struct NearestBoundary {
+  std::size_t index;
+  double r2;
+};
+inline NearestBoundary nearest_boundary(const SphContext& ctx, const NeighborList& list,
+                                        const Particles& p, std::size_t i, bool skip_bodies) {
+  const std::size_t n = p.fluid_count;
+  NearestBoundary nearest{p.size(), std::numeric_limits<double>::max()};
+  for (std::uint64_t k = list.offset[i]; k < list.offset[i + 1]; ++k) {
+    const std::size_t w = list.index[k];
+    if (w < n || (skip_bodies && p.body[w] >= 0)) continue;
+    double d[3];
+    ctx.displacement(p, i, w, d);
+    const double r2 = d[0] * d[0] + d[1] * d[1] + d[2] * d[2];
+    if (r2 < nearest.r2) nearest = {w, r2};
+  }
+  return nearest;
+}
 
 // The virtual pressure of boundary particle w as seen by fluid particle i, P_w = P_i + g_iw:
 //   normal to the wall, the Neumann condition of the projection, dP/dn = (rho0/dt)(u*_i - u_w).n,

@@ -8,6 +8,7 @@
 #include <limits>
 
 #include "engine/core/sph_operators.hpp"
+#include "engine/fluid/isph_stages.hpp"
 #include "engine/fluid/pressure_poisson_parts.hpp"
 
 namespace washout {
@@ -31,22 +32,14 @@ struct WallClearance {
 
 WallClearance wall_clearance(const SphContext& ctx, const NeighborList& list, const Particles& p,
                              std::size_t i, double dt) {
-  const std::size_t n = p.fluid_count;
   WallClearance c;
-  double nearest_r2 = std::numeric_limits<double>::max();
-  for (std::uint64_t k = list.offset[i]; k < list.offset[i + 1]; ++k) {
-    const std::size_t w = list.index[k];
-    if (w < n) continue;
-    double d[3];
-    ctx.displacement(p, i, w, d);
-    const double r2 = d[0] * d[0] + d[1] * d[1] + d[2] * d[2];
-    if (r2 < nearest_r2) nearest_r2 = r2, c.wall = w;
-  }
-  if (c.wall == std::numeric_limits<std::size_t>::max()) return c;
+  const NearestBoundary nearest = nearest_boundary(ctx, list, p, i, /*skip_bodies=*/false);
+  if (nearest.index == p.size()) return c;
+  c.wall = nearest.index;
   // The distance to the nearest wall particle less its depth: exact straight above it, longer
   // beside it (so never a false alarm), and blind to the particle's normal, which beside a
   // corner can point along the diagonal.
-  const double y = std::sqrt(nearest_r2) - p.wall_distance[c.wall];
+  const double y = std::sqrt(nearest.r2) - p.wall_distance[c.wall];
   if (y < kClearance * ctx.d0)
     c.speed = kClearanceRelaxation * (kClearance * ctx.d0 - std::max(y, 0.0)) / dt;
   return c;

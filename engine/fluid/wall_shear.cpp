@@ -17,7 +17,6 @@
 // Only fixed and moving walls: a body's load is the pressure on its surface (METHOD.md).
 #include <algorithm>
 #include <cmath>
-#include <limits>
 
 #include "engine/fluid/isph_stages.hpp"
 
@@ -42,17 +41,8 @@ void apply_wall_shear(const SphContext& ctx, const NeighborList& list, const Par
 #pragma omp parallel for schedule(static)
   for (std::size_t i = 0; i < n; ++i) {
     // The nearest wall particle gives the wall's surface: its plane, velocity and slip.
-    std::size_t nearest = 0;
-    double nearest_r2 = std::numeric_limits<double>::max();
-    for (std::uint64_t k = list.offset[i]; k < list.offset[i + 1]; ++k) {
-      const std::size_t w = list.index[k];
-      if (w < n || p.body[w] >= 0) continue;
-      double d[3];
-      ctx.displacement(p, i, w, d);
-      const double r2 = d[0] * d[0] + d[1] * d[1] + d[2] * d[2];
-      if (r2 < nearest_r2) nearest_r2 = r2, nearest = w;
-    }
-    if (nearest == 0) continue;
+    const std::size_t nearest = nearest_boundary(ctx, list, p, i, /*skip_bodies=*/true).index;
+    if (nearest == p.size()) continue;
     const double slip = walls.slip[nearest - n];
     if (slip >= 1.0) continue;
     double d[3];
