@@ -3,6 +3,8 @@
 // probes): f(m) = sum_f W(m - x_f) f_f / sum_f W(m - x_f), over fluid particles only.
 #include <Eigen/Dense>
 #include <cmath>
+#include <utility>
+#include <vector>
 
 #include "engine/core/neighbor_grid.hpp"
 #include "engine/core/sph_context.hpp"
@@ -16,8 +18,7 @@ double accumulate_fluid_at(const SphContext& ctx, const NeighborGrid& grid, cons
                            const double m[3], Accumulate&& accumulate) {
   const double r2max = 4.0 * ctx.h * ctx.h;
   double weight_sum = 0.0;
-  grid.for_each_candidate(m, [&](std::uint32_t f) {
-    if (f >= p.fluid_count) return;
+  grid.for_each_candidate_below(m, static_cast<std::uint32_t>(p.fluid_count), [&](std::uint32_t f) {
     double d[3] = {m[0] - p.position[0][f], m[1] - p.position[1][f], m[2] - p.position[2][f]};
     if (ctx.periodic.any()) ctx.periodic.minimum_image(d);
     const double r2 = d[0] * d[0] + d[1] * d[1] + d[2] * d[2];
@@ -45,10 +46,14 @@ double interpolate_fluid_linear(const SphContext& ctx, const NeighborGrid& grid,
                                 const double m[3], Visit&& visit) {
   Eigen::Matrix4d A = Eigen::Matrix4d::Zero();
   const double scale = 1.0 / ctx.h;  // keeps A well scaled whatever the units
+  // The fluid near m, kept from the first pass for the second (one search, not two).
+  thread_local std::vector<std::pair<std::uint32_t, double>> near;
+  near.clear();
   const double fraction = accumulate_fluid_at(ctx, grid, p, m, [&](std::uint32_t f, double w) {
     Eigen::Vector4d q(1.0, 0.0, 0.0, 0.0);
     for (int a = 0; a < ctx.dim; ++a) q[a + 1] = (p.position[a][f] - m[a]) * scale;
     A += w * q * q.transpose();
+    near.emplace_back(f, w);
   });
   if (fraction < kDryFluidFraction) return fraction;
   for (int a = ctx.dim; a < 3; ++a) A(a + 1, a + 1) = 1.0;
@@ -60,12 +65,15 @@ double interpolate_fluid_linear(const SphContext& ctx, const NeighborGrid& grid,
     linear = beta.allFinite();
   }
   const double shepard = 1.0 / A(0, 0);
-  accumulate_fluid_at(ctx, grid, p, m, [&](std::uint32_t f, double w) {
-    if (!linear) return visit(f, w * shepard);
+  for (const auto& [f, w] : near) {
+    if (!linear) {
+      visit(f, w * shepard);
+      continue;
+    }
     double q_dot_beta = beta[0];
     for (int a = 0; a < ctx.dim; ++a) q_dot_beta += (p.position[a][f] - m[a]) * scale * beta[a + 1];
     visit(f, w * q_dot_beta);
-  });
+  }
   return fraction;
 }
 

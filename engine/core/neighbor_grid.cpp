@@ -27,8 +27,8 @@ std::size_t NeighborGrid::cell_index(const long c[3]) const {
              (static_cast<std::size_t>(c[1]) + static_cast<std::size_t>(cells_[1]) * c[2]);
 }
 
-void NeighborGrid::build(const Particles& particles, double cell_size,
-                         const PeriodicBox& periodic) {
+void NeighborGrid::build(const Particles& particles, double radius, const PeriodicBox& periodic) {
+  const double cell_size = radius / static_cast<double>(kReach);
   dim_ = particles.dim;
   periodic_ = periodic;
   const std::size_t n = particles.size();
@@ -39,7 +39,8 @@ void NeighborGrid::build(const Particles& particles, double cell_size,
     if (a >= dim_) continue;
     if (periodic.periodic[a]) {
       cells_[a] = static_cast<long>(std::floor(periodic.length[a] / cell_size));
-      if (cells_[a] < 3)
+      // Three supports: no cell is then reached twice by a search that wraps around.
+      if (periodic.length[a] < 3.0 * radius)
         throw std::invalid_argument("periodic length along axis " + std::to_string(a) +
                                     " must be at least three kernel supports (3 x 2h)");
       cell_size_[a] = periodic.length[a] / cells_[a];
@@ -76,31 +77,46 @@ void NeighborGrid::build(const Particles& particles, double cell_size,
     for (int a = 0; a < dim_; ++a) c[a] = cell_coordinate(particles.position[a][i], a);
     cell_of_[i] = static_cast<std::uint32_t>(cell_index(c));
   }
-  // Counting sort by cell: particles of one cell are contiguous in sorted_.
+  // Counting sort by cell: particles of one cell are contiguous in sorted_, in index order (so
+  // lists come out the same whatever the threads). Each bucket's count becomes its end, and
+  // filling backwards moves it to its start, with no second array of cells.
   cell_start_.assign(cell_count + 2, 0);
-  for (std::size_t i = 0; i < n; ++i) ++cell_start_[cell_of_[i] + 1];
-  for (std::size_t c = 0; c <= cell_count; ++c) cell_start_[c + 1] += cell_start_[c];
+  for (std::size_t i = 0; i < n; ++i) ++cell_start_[cell_of_[i]];
+  for (std::size_t c = 1; c <= cell_count; ++c) cell_start_[c] += cell_start_[c - 1];
+  cell_start_[cell_count + 1] = cell_start_[cell_count];
   sorted_.resize(n);
-  std::vector<std::uint32_t> fill(cell_start_.begin(), cell_start_.end() - 1);
-  for (std::size_t i = 0; i < n; ++i) sorted_[fill[cell_of_[i]]++] = static_cast<std::uint32_t>(i);
+  for (std::size_t i = n; i-- > 0;)
+    sorted_[--cell_start_[cell_of_[i]]] = static_cast<std::uint32_t>(i);
   sorted_.resize(cell_start_[cell_count]);  // the retired, sorted last, are dropped
+  // The positions in the same order: a search then reads the cells around a point as
+  // contiguous memory instead of gathering three coordinates per candidate from anywhere.
+  sorted_position_.resize(3 * sorted_.size());
+#pragma omp parallel for schedule(static)
+  for (std::size_t k = 0; k < sorted_.size(); ++k)
+    for (int a = 0; a < 3; ++a) sorted_position_[3 * k + a] = particles.position[a][sorted_[k]];
 }
 
 void NeighborGrid::build_list(const Particles& particles, std::size_t query_count, double radius,
                               NeighborList& list) const {
   const double r2max = radius * radius;
   const auto& X = particles.position;
+  const bool periodic = periodic_.any();
+  // The particles must be where build() bucketed them: the candidates' positions are its copy.
   auto for_each_neighbor = [&](std::size_t i, auto&& f) {
     if (retired(particles, i)) return;
     const double p[3] = {X[0][i], X[1][i], X[2][i]};
-    for_each_candidate(p, [&](std::uint32_t j) {
-      if (j == i) return;
-      double d[3] = {p[0] - X[0][j], p[1] - X[1][j], p[2] - X[2][j]};
-      periodic_.minimum_image(d);
-      if (d[0] * d[0] + d[1] * d[1] + d[2] * d[2] < r2max) f(j);
+    for_each_cell_around(p, [&](std::uint32_t begin, std::uint32_t end) {
+      for (std::uint32_t k = begin; k < end; ++k) {
+        const std::uint32_t j = sorted_[k];
+        const double* y = &sorted_position_[3 * static_cast<std::size_t>(k)];
+        double d[3] = {p[0] - y[0], p[1] - y[1], p[2] - y[2]};
+        if (periodic) periodic_.minimum_image(d);
+        if (j != i && d[0] * d[0] + d[1] * d[1] + d[2] * d[2] < r2max) f(j);
+      }
     });
   };
-  // Two passes (count, then fill) keep the list contiguous and the build parallel.
+  // Two passes (count, then fill) keep the list contiguous and the build parallel without a
+  // second copy of the list in memory (the search is cheap enough to run twice).
   list.offset.assign(query_count + 1, 0);
 #pragma omp parallel for schedule(dynamic, 256)
   for (std::size_t i = 0; i < query_count; ++i) {

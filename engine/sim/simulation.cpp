@@ -508,13 +508,14 @@ void Simulation::update_boundary_pressures() {
   const std::size_t n = particles_.size();
   active_boundary_.assign(n, 0);
   const double r2max = 4.0 * ctx_.h * ctx_.h;
+  const auto fluid = static_cast<std::uint32_t>(particles_.fluid_count);
 #pragma omp parallel for schedule(dynamic, 512)
   for (std::size_t w = particles_.fluid_count; w < n; ++w) {
     const double x[3] = {particles_.position[0][w], particles_.position[1][w],
                          particles_.position[2][w]};
     bool sees = false;
-    grid_.for_each_candidate(x, [&](std::uint32_t f) {
-      if (sees || f >= particles_.fluid_count) return;
+    grid_.for_each_candidate_below(x, fluid, [&](std::uint32_t f) {
+      if (sees) return;
       double d[3];
       ctx_.displacement(particles_, w, f, d);
       sees = d[0] * d[0] + d[1] * d[1] + d[2] * d[2] < r2max;

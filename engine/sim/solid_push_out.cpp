@@ -110,6 +110,7 @@ double Simulation::distance_to_solids(const Vec3& x) const {
 void Simulation::move_out_of_gap(std::size_t i) {
   const int dim = particles_.dim;
   const double d0 = ctx_.d0;
+  const auto fluid = static_cast<std::uint32_t>(particles_.fluid_count);
   // A free place must also have fluid within the kernel support: the far side of a wall (as
   // thick as the support) is clear of solids too, but out of the fluid's reach.
   auto clear_of_solids = [&](const Vec3& y) {
@@ -126,8 +127,8 @@ void Simulation::move_out_of_gap(std::size_t i) {
     if (!clear_of_solids(y)) return false;
     const double point[3] = {y[0], y[1], y[2]};
     bool crowded = false;
-    grid_.for_each_candidate(point, [&](std::uint32_t f) {
-      if (crowded || f >= particles_.fluid_count || f == i) return;
+    grid_.for_each_candidate_below(point, fluid, [&](std::uint32_t f) {
+      if (crowded || f == i) return;
       crowded = (particles_.x(f) - y).squaredNorm() < 0.25 * d0 * d0;
     });
     return !crowded;

@@ -90,6 +90,40 @@ TEST(NeighborGrid, MatchesBruteForce) {
     }
 }
 
+// A search for the fluid alone (indices below the fluid count, walls after them) finds every
+// fluid particle within the radius of any point, inside the cloud or beyond its edge, and no wall.
+TEST(NeighborGrid, FluidOnlySearchFindsAllFluid) {
+  for (int dim : {2, 3}) {
+    const double box = 1.0, radius = 0.11;
+    Particles p = random_particles(dim, dim == 2 ? 1500 : 3000, box, 5);
+    const std::size_t fluid = p.size() / 2;  // the rest stand for wall particles
+    NeighborGrid grid;
+    grid.build(p, radius, PeriodicBox{});
+    std::mt19937 rng(3);
+    std::uniform_real_distribution<double> u(-0.1, box + 0.1);
+    std::size_t missed = 0, walls = 0, found_total = 0;
+    for (int q = 0; q < 300; ++q) {
+      const double x[3] = {u(rng), u(rng), dim == 3 ? u(rng) : 0.0};
+      std::set<std::uint32_t> found;
+      grid.for_each_candidate_below(x, static_cast<std::uint32_t>(fluid), [&](std::uint32_t j) {
+        walls += j >= fluid;
+        found.insert(j);
+      });
+      for (std::size_t j = 0; j < fluid; ++j) {
+        double r2 = 0;
+        for (int a = 0; a < 3; ++a) r2 += std::pow(x[a] - p.position[a][j], 2);
+        if (r2 < radius * radius)
+          missed += found.count(static_cast<std::uint32_t>(j)) == 0, ++found_total;
+      }
+    }
+    std::printf("dim %d: %zu fluid particles within reach, %zu missed, %zu walls visited\n", dim,
+                found_total, missed, walls);
+    EXPECT_EQ(missed, 0u);
+    EXPECT_EQ(walls, 0u);
+    EXPECT_GT(found_total, 1000u);
+  }
+}
+
 // Retired fluid (left the domain) is in no cell: it has no neighbours and is nobody's, the
 // others keep exactly their brute-force pairs among themselves, and one retired far away does
 // not stretch the grid.
