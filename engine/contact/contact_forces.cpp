@@ -61,11 +61,20 @@ void detect_wall_contacts(std::span<const BodyModel> models, std::span<const Bod
       }
       const PairLaw& law = ws.wall_law[slot];
       int touching = 0;
+      // By the same bound per particle: one no further from the centre than `clear` is out of
+      // reach, without its distance to the wall (a girder spanning the flume is always near
+      // both side walls, but only its ends are).
+      const double clear = centre_distance - r - reach[b] - 1e-12;
+      const double clear2 = clear > 0.0 ? clear * clear : -1.0;
       std::visit(
           [&](const auto& shape) {
             Vec3 normal;
             for (std::size_t i = 0; i < n; ++i) {
               const Vec3 xi(x.x[i], x.y[i], x.z[i]);
+              if ((xi - state.position).squaredNorm() <= clear2) {
+                spring.x[first + i] = spring.y[first + i] = spring.z[first + i] = 0.0;
+                continue;
+              }
               const double gap = shape.distance(xi, normal) - r;
               const double overlap = -gap;
               if (overlap <= 0.0) {  // separated: the pair's tangential spring is reset
