@@ -29,6 +29,45 @@ auto spring_key(const PairSpring& s) {
   return std::tie(s.body_a, s.particle_a, s.body_b, s.particle_b);
 }
 
+// The near-wall list's skin beyond the reach, in contact radii: a body at rest on a wall
+// builds its lists once; one moving a contact radius per fluid step, about once a step.
+constexpr double kNearListMargin = 1.0;
+
+// How far any particle of the body has moved since the list was built, bounded by the
+// centre's displacement and the rotation's chord 2 sin(theta/2) |r0| <= 2 |q_v| R.
+bool near_list_holds(const NearWallList& near, const BodyModel& model, const BodyState& state,
+                     double reach) {
+  if (near.skin < 0.0) return false;
+  const Eigen::Quaterniond turn = state.orientation * near.orientation.conjugate();
+  const double moved =
+      (state.position - near.position).norm() + 2.0 * turn.vec().norm() * model.bounding_radius;
+  return moved + reach + 1e-12 < near.skin;
+}
+
+// Lists the particles within `skin` of the wall; every other particle is separated from it,
+// so its tangential spring is reset here, as the sub-steps would.
+template <class Shape>
+void build_near_list(const Shape& shape, const BodyModel& model, const BodyState& state,
+                     const rigid::Vec3Array& x, double centre_distance, double skin,
+                     rigid::Vec3Array& spring, std::size_t first, NearWallList& near) {
+  const double r = model.contact_radius;
+  const double clear = centre_distance - r - skin - 1e-12;
+  const double clear2 = clear > 0.0 ? clear * clear : -1.0;
+  near.particle.clear();
+  Vec3 normal;
+  for (std::size_t i = 0; i < x.size(); ++i) {
+    const Vec3 xi(x.x[i], x.y[i], x.z[i]);
+    if ((xi - state.position).squaredNorm() > clear2 && shape.distance(xi, normal) - r < skin) {
+      near.particle.push_back(static_cast<std::int32_t>(i));
+      continue;
+    }
+    spring.x[first + i] = spring.y[first + i] = spring.z[first + i] = 0.0;
+  }
+  near.position = state.position;
+  near.orientation = state.orientation;
+  near.skin = skin;
+}
+
 void detect_wall_contacts(std::span<const BodyModel> models, std::span<const BodyState> states,
                           const ContactScene& scene, std::span<const double> reach,
                           ContactWorkspace& ws) {
@@ -60,16 +99,20 @@ void detect_wall_contacts(std::span<const BodyModel> models, std::span<const Bod
         continue;
       }
       const PairLaw& law = ws.wall_law[slot];
+      NearWallList& near = ws.near_wall[slot];
       int touching = 0;
-      // By the same bound per particle: one no further from the centre than `clear` is out of
-      // reach, without its distance to the wall (a girder spanning the flume is always near
-      // both side walls, but only its ends are).
-      const double clear = centre_distance - r - reach[b] - 1e-12;
-      const double clear2 = clear > 0.0 ? clear * clear : -1.0;
       std::visit(
           [&](const auto& shape) {
             Vec3 normal;
-            for (std::size_t i = 0; i < n; ++i) {
+            if (!near_list_holds(near, model, state, reach[b]))
+              build_near_list(shape, model, state, x, centre_distance,
+                              reach[b] + kNearListMargin * r, spring, first, near);
+            // By the same bound per particle: one no further from the centre than `clear` is
+            // out of reach, without its distance to the wall (a girder spanning the flume is
+            // always near both side walls, but only its ends are).
+            const double clear = centre_distance - r - reach[b] - 1e-12;
+            const double clear2 = clear > 0.0 ? clear * clear : -1.0;
+            for (const std::int32_t i : near.particle) {
               const Vec3 xi(x.x[i], x.y[i], x.z[i]);
               if ((xi - state.position).squaredNorm() <= clear2) {
                 spring.x[first + i] = spring.y[first + i] = spring.z[first + i] = 0.0;
@@ -85,7 +128,7 @@ void detect_wall_contacts(std::span<const BodyModel> models, std::span<const Bod
                 normal.z() = 0.0;
                 normal.normalize();
               }
-              ws.wall_candidates.push_back({b, w, static_cast<std::int32_t>(i), overlap, normal});
+              ws.wall_candidates.push_back({b, w, i, overlap, normal});
               if (overlap > 0.0) ++touching;
               summary.frequency2 +=
                   step_stiffness(law, overlap, reference * r) *
@@ -224,6 +267,7 @@ void ContactWorkspace::prepare(std::span<const BodyModel> models, const ContactS
     std::fill(wall_spring[b].z.begin(), wall_spring[b].z.end(), 0.0);
   }
   wall_spring_used.assign(static_cast<std::size_t>(bodies) * walls, 0);
+  near_wall.assign(static_cast<std::size_t>(bodies) * walls, {});
   pair_spring.clear();
   next_pair_spring.clear();
 }

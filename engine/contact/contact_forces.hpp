@@ -55,6 +55,17 @@ struct BodyContactSummary {
   double frequency2 = 0.0;  // bound on omega^2 of this body's contact modes [1/s^2]
 };
 
+// The particles of one body that were near one wall when the list was built, and the body's
+// pose then (a Verlet list with a skin): a particle left out was at least `skin` from the
+// wall, so it is still out of reach while the body has moved, at any of its particles, less
+// than skin - reach. Only the listed particles' distances are computed at each sub-step.
+struct NearWallList {
+  std::vector<std::int32_t> particle;  // ascending
+  Vec3 position = Vec3::Zero();
+  Eigen::Quaterniond orientation = Eigen::Quaterniond::Identity();
+  double skin = -1.0;  // < 0: not built
+};
+
 // Contact data that changes during a run: the tangential springs (history across sub-steps
 // and fluid steps) and scratch arrays. One per simulation; sized by prepare().
 struct ContactWorkspace {
@@ -70,6 +81,7 @@ struct ContactWorkspace {
   // Per body: tangential springs against walls, [wall * contact particles + particle].
   std::vector<rigid::Vec3Array> wall_spring;
   std::vector<std::uint8_t> wall_spring_used;  // [body * walls + wall]: some spring may be != 0
+  std::vector<NearWallList> near_wall;         // [body * walls + wall]
   std::vector<PairSpring> pair_spring, next_pair_spring;  // sorted by (a, i, b, j)
 
   std::vector<WallCandidate> wall_candidates;
