@@ -6,6 +6,18 @@
 // or the difference form (1/rho_i) sum_j m_j (P_j - P_i) grad W_ij, both with equal volumes
 // V = m/rho0 and the lattice normalisation. A boundary neighbour w carries the virtual pressure
 // P_w = P_i + g_iw of the Neumann wall condition (see pressure_poisson.cpp).
+//
+// Free-surface particles see neighbours on one side only. Where the PPE holds P = 0 at d0/2
+// beyond them through ghost values (surface_pressure = "ghost"), their gradient is the
+// difference form completed by the same ghosts, P_k = P_i (1 - 2 (r_k . n) / d0), whose share
+//   sum_missing V (P_k - P_i) grad W_ik = (2 P_i / d0) (sum_present V r_ij (x) grad W_ij - I) n
+// needs only the present neighbours (on a full lattice sum V r (x) grad W = I with the lattice
+// normalisation), n the PPE's outward normal m_i / |m_i| (ppe_matrix.cpp). The gradient then
+// sees the surface condition the PPE imposed: a surface particle pulled back by a negative
+// pressure is pulled back, where a gradient over its present neighbours alone pushed it further
+// out and the next step's divergence grew (docs/stability.md, ninth session). Otherwise
+// (surface_gradient = "corrected", or P = 0 on the particles) the difference form takes the
+// kernel gradient correction, exact for a linear field over the present neighbours.
 #include <Eigen/Dense>
 #include <algorithm>
 
@@ -33,20 +45,40 @@ bool gradient_correction_matrix(const SphContext& ctx, const NeighborList& list,
   return true;
 }
 
+// The ghost neighbours' share of surface particle i's difference-form gradient (above).
+void add_ghost_share(const SphContext& ctx, const NeighborList& list, const Particles& p,
+                     std::size_t i, double P_i, double grad[3]) {
+  Eigen::Matrix3d present = Eigen::Matrix3d::Zero();  // sum_present V r_ij (x) grad W_ij
+  Eigen::Vector3d m = Eigen::Vector3d::Zero();        // the PPE's m_i
+  for_each_neighbor(ctx, list, p, i, [&](const NeighborPair& q) {
+    const double g = ctx.gradient_weight(q.r);  // grad W_ij = g (x_i - x_j), r_ij = x_j - x_i
+    const double c = -ctx.laplacian_weight(q.r, q.r2);
+    for (int a = 0; a < ctx.dim; ++a) {
+      m[a] += c * q.d[a];
+      for (int b = 0; b < ctx.dim; ++b) present(a, b) -= q.d[a] * g * q.d[b];
+    }
+  });
+  const double m_norm = m.norm();
+  if (!(m_norm > 0.0)) return;  // no missing weight: the PPE added no ghost either
+  Eigen::Matrix3d full = Eigen::Matrix3d::Identity();  // the sum over a full support
+  if (ctx.dim == 2) full(2, 2) = 0.0;
+  const Eigen::Vector3d share = (2.0 * P_i / ctx.d0) * ((present - full) * (m / m_norm));
+  for (int a = 0; a < ctx.dim; ++a) grad[a] += share[a];
+}
+
 }  // namespace
 
 void correct_velocity(const SphContext& ctx, const NeighborList& list, Particles& p,
                       const FluidWork& work, const WallConditions& walls, const Vec3& gravity,
-                      double dt, bool symmetric_form) {
+                      double dt, const GradientForms& forms) {
   const std::size_t n = p.fluid_count;
 #pragma omp parallel for schedule(static)
   for (std::size_t i = 0; i < n; ++i) {
-    // Free-surface particles (P = 0) see neighbours on one side only: the symmetric form would
-    // give them about half the true gradient and let the surface sag. They take the difference
-    // form with the kernel gradient correction, exact for a linear pressure field.
     const bool surface = work.free_surface[i] != 0;
+    // Ghost rows: surface particles whose pressure the PPE solved with ghost neighbours.
+    const bool ghost = surface && forms.ghost_surface && work.unknown[i] >= 0;
     Eigen::Matrix3d L;
-    const bool corrected = surface && gradient_correction_matrix(ctx, list, p, i, L);
+    const bool corrected = surface && !ghost && gradient_correction_matrix(ctx, list, p, i, L);
     const double Pi = p.pressure[i];
     // A boundary neighbour carries the virtual pressure of the Neumann wall condition.
     const auto neighbor_pressure = [&](const NeighborPair& q) {
@@ -54,10 +86,11 @@ void correct_velocity(const SphContext& ctx, const NeighborList& list, Particles
                      : Pi + wall_pressure_jump(ctx, p, work, walls, gravity, i, q.j, q.d, dt);
     };
     double grad[3];
-    if (symmetric_form && !corrected)
+    if (forms.symmetric && !ghost && !corrected)
       symmetric_gradient(ctx, list, p, i, Pi, neighbor_pressure, grad);
     else
       difference_gradient(ctx, list, p, i, Pi, neighbor_pressure, grad);
+    if (ghost) add_ghost_share(ctx, list, p, i, Pi, grad);
     if (corrected) {
       // L already normalises the sum: undo the lattice normalisation before applying it.
       const Eigen::Vector3d g =

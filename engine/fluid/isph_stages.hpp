@@ -115,10 +115,16 @@ inline double wall_pressure_jump(const SphContext& ctx, const Particles& p, cons
   return ctx.rho0 * (un / dt * rn + (gr - gn * rn));
 }
 
+// The corrector's gradient forms, resolved once from the parameters (corrector.cpp).
+struct GradientForms {
+  bool symmetric = true;      // interior: symmetric (momentum-conserving) or difference form
+  bool ghost_surface = true;  // surface rows: completed by the PPE's ghost values, or corrected
+};
+
 // Step 3, corrector: u^{n+1} = u* - (dt/rho0) <grad P> (corrector.cpp).
 void correct_velocity(const SphContext& ctx, const NeighborList& list, Particles& p,
                       const FluidWork& work, const WallConditions& walls, const Vec3& gravity,
-                      double dt, bool symmetric_form);
+                      double dt, const GradientForms& forms);
 // Free-surface particles take this fraction of their neighbourhood's mean velocity (XSPH on the
 // surface only; surface_smoothing.cpp).
 void smooth_surface_velocity(const SphContext& ctx, const NeighborList& list, Particles& p,

@@ -112,6 +112,13 @@ const std::vector<ParameterInfo>& ParameterSet::engine_table() {
       {"pressure_gradient", "-",
        "corrector gradient: \"symmetric\" (momentum-conserving) or \"difference\"",
        d.pressure_gradient},
+      {"surface_gradient", "-",
+       "corrector gradient of free-surface particles: \"corrected\" (the difference form with "
+       "the kernel gradient correction over the present neighbours) or \"ghost\" (the "
+       "difference form completed by the PPE's ghost values, so that it sees P = 0 at d0/2 "
+       "beyond the surface; with surface_pressure = \"ghost\" only, else as corrected; "
+       "docs/method.md, ninth session)",
+       d.surface_gradient},
       {"wall_pressure", "-",
        "wall condition of the PPE: \"neumann\" (dP/dn from the fluid's relative velocity), "
        "\"dynamic\" (walls in the divergence, dP/dn = rho0 (g - a_wall).n; solves dynamic "
@@ -373,6 +380,7 @@ SimulationParameters SimulationParameters::from(const ParameterSet& set) {
   p.coupling_tolerance = positive("coupling_tolerance");
   p.solver_max_iterations = integer("solver_max_iterations", positive("solver_max_iterations"));
   p.pressure_gradient = one_of("pressure_gradient", {"symmetric", "difference"});
+  p.surface_gradient = one_of("surface_gradient", {"ghost", "corrected"});
   p.wall_pressure = one_of("wall_pressure", {"auto", "neumann", "dynamic"});
   p.shifting = non_negative("shifting");
   p.shifting_with_speed = non_negative("shifting_with_speed");

@@ -92,6 +92,9 @@ struct SimulationParameters {
   double coupling_tolerance = 1e-2;  // body coupling's response solves, first pass
   int solver_max_iterations = 5000;
   std::string pressure_gradient = "symmetric";
+  // "ghost" holds the surface without smoothing and floats bodies at their draft, but moves the
+  // validated surges (docs/method.md, ninth session): an option until they are re-validated.
+  std::string surface_gradient = "corrected";
   // Walls in the divergence for every scene: the Neumann form made thin films on no-slip walls
   // alternate and blow up (docs/method.md).
   std::string wall_pressure = "dynamic";

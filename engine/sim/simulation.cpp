@@ -128,7 +128,8 @@ Simulation::Simulation(Model model)
 
   // Modes resolved once from the parameters, and the step composed from what the scene uses.
   ghost_surface_ = prm.surface_pressure == "ghost";
-  symmetric_gradient_ = prm.pressure_gradient == "symmetric";
+  gradient_forms_.symmetric = prm.pressure_gradient == "symmetric";
+  gradient_forms_.ghost_surface = ghost_surface_ && prm.surface_gradient == "ghost";
   SceneFeatures features;
   features.bodies = bodies_ != nullptr;
   for (std::size_t b = 0; bodies_ && b < bodies_->size(); ++b)
@@ -289,7 +290,7 @@ void Simulation::run_stage(Stage stage, StepInProgress& now) {
       return;
     case Stage::corrector:
       correct_velocity(ctx_, neighbors_, particles_, work_, walls_, prm.gravity, dt,
-                       symmetric_gradient_);
+                       gradient_forms_);
       return;
     case Stage::surface_smoothing:
       smooth_surface_velocity(ctx_, neighbors_, particles_, work_, prm.surface_smoothing,

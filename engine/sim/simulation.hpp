@@ -199,7 +199,8 @@ class Simulation {
   StageTimer timer_;
   // The step composed from the scene (step_plan.hpp) and the modes it runs in.
   std::vector<Stage> plan_;
-  bool ghost_surface_ = true, symmetric_gradient_ = true;
+  bool ghost_surface_ = true;
+  GradientForms gradient_forms_;
   double time_ = 0.0;
   long step_ = 0;
   std::uint64_t layout_fingerprint_ = 0;
