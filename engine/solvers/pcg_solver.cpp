@@ -16,9 +16,10 @@ namespace washout {
 namespace {
 
 constexpr std::size_t kBlock = 4096;
-// Below this many unknowns a PCG iteration is a few microseconds of work: forking threads
-// (and waiting at barriers when another process holds a core) would cost far more.
-constexpr std::size_t kParallelRows = 20000;
+// Below this many unknowns a vector pass of the loop is a few microseconds of work: forking
+// threads (and waiting at barriers when another process holds a core) would cost as much.
+// (The product, by far the largest part, decides by its non-zeros: sparse_matrix.cpp.)
+constexpr std::size_t kParallelRows = 4096;
 
 double seconds_since(std::chrono::steady_clock::time_point start) {
   return std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
