@@ -117,8 +117,8 @@ inline double wall_pressure_jump(const SphContext& ctx, const Particles& p, cons
 
 // The corrector's gradient forms, resolved once from the parameters (corrector.cpp).
 struct GradientForms {
-  bool symmetric = true;      // interior: symmetric (momentum-conserving) or difference form
-  bool ghost_surface = true;  // surface rows: completed by the PPE's ghost values, or corrected
+  bool symmetric = true;       // interior: symmetric (momentum-conserving) or difference form
+  bool ghost_surface = false;  // surface rows: completed by the PPE's ghost values, or corrected
 };
 
 // Step 3, corrector: u^{n+1} = u* - (dt/rho0) <grad P> (corrector.cpp).

@@ -380,7 +380,7 @@ SimulationParameters SimulationParameters::from(const ParameterSet& set) {
   p.coupling_tolerance = positive("coupling_tolerance");
   p.solver_max_iterations = integer("solver_max_iterations", positive("solver_max_iterations"));
   p.pressure_gradient = one_of("pressure_gradient", {"symmetric", "difference"});
-  p.surface_gradient = one_of("surface_gradient", {"ghost", "corrected"});
+  p.surface_gradient = one_of("surface_gradient", {"corrected", "ghost"});
   p.wall_pressure = one_of("wall_pressure", {"auto", "neumann", "dynamic"});
   p.shifting = non_negative("shifting");
   p.shifting_with_speed = non_negative("shifting_with_speed");
