@@ -33,6 +33,15 @@ auto spring_key(const PairSpring& s) {
 // builds its lists once; one moving a contact radius per fluid step, about once a step.
 constexpr double kNearListMargin = 1.0;
 
+// The signed distance grows by at most the distance moved (1-Lipschitz), so a particle no
+// further from the body's centre than this radius is at least `margin` from the wall, given
+// the centre's distance to it; squared, and negative where no particle qualifies. The 1e-12 m
+// covers the rounding of distances of order metres.
+double clear_radius2(double centre_distance, double contact_radius, double margin) {
+  const double clear = centre_distance - contact_radius - margin - 1e-12;
+  return clear > 0.0 ? clear * clear : -1.0;
+}
+
 // How far any particle of the body has moved since the list was built, bounded by the
 // centre's displacement and the rotation's chord 2 sin(theta/2) |r0| <= 2 |q_v| R.
 bool near_list_holds(const NearWallList& near, const BodyModel& model, const BodyState& state,
@@ -51,8 +60,7 @@ void build_near_list(const Shape& shape, const BodyModel& model, const BodyState
                      const rigid::Vec3Array& x, double centre_distance, double skin,
                      rigid::Vec3Array& spring, std::size_t first, NearWallList& near) {
   const double r = model.contact_radius;
-  const double clear = centre_distance - r - skin - 1e-12;
-  const double clear2 = clear > 0.0 ? clear * clear : -1.0;
+  const double clear2 = clear_radius2(centre_distance, r, skin);
   near.particle.clear();
   Vec3 normal;
   for (std::size_t i = 0; i < x.size(); ++i) {
@@ -107,11 +115,10 @@ void detect_wall_contacts(std::span<const BodyModel> models, std::span<const Bod
             if (!near_list_holds(near, model, state, reach[b]))
               build_near_list(shape, model, state, x, centre_distance,
                               reach[b] + kNearListMargin * r, spring, first, near);
-            // By the same bound per particle: one no further from the centre than `clear` is
-            // out of reach, without its distance to the wall (a girder spanning the flume is
-            // always near both side walls, but only its ends are).
-            const double clear = centre_distance - r - reach[b] - 1e-12;
-            const double clear2 = clear > 0.0 ? clear * clear : -1.0;
+            // By the same bound per particle: one within the clear radius is out of reach,
+            // without its distance to the wall (a girder spanning the flume is always near
+            // both side walls, but only its ends are).
+            const double clear2 = clear_radius2(centre_distance, r, reach[b]);
             for (const std::int32_t i : near.particle) {
               const Vec3 xi(x.x[i], x.y[i], x.z[i]);
               if ((xi - state.position).squaredNorm() <= clear2) {
