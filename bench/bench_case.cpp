@@ -118,8 +118,8 @@ int main(int argc, char** argv) {
   std::printf("{\"kind\": \"case\", \"case\": %s, \"scene\": %s, \"dim\": %s, ",
               quoted(label).c_str(), quoted(request.scene_path).c_str(),
               dim > 0 ? std::to_string(dim).c_str() : "null");
-  std::printf("\"particles\": {\"fluid\": %zu, \"wall\": %zu, \"active_wall\": null}, ",
-              s.fluid_particles, s.boundary_particles);
+  std::printf("\"particles\": {\"fluid\": %zu, \"wall\": %zu, \"active_wall\": %s}, ",
+              s.fluid_particles, s.boundary_particles, number(s.mean_active_boundary).c_str());
   std::printf(
       "\"steps\": %ld, \"simulated_seconds\": %s, \"wall_seconds\": %s, "
       "\"seconds_per_step\": %s, \"fluid_particle_steps_per_second\": %s, "

@@ -50,6 +50,9 @@ def check(lines):
             for field in ("fluid", "wall", "active_wall"):
                 if field not in particles:
                     problems.append(f"line {n} ({name}): particles has no {field!r}")
+            active, wall = particles.get("active_wall"), particles.get("wall")
+            if not isinstance(active, (int, float)) or not 0 < active <= (wall or 0):
+                problems.append(f"line {n} ({name}): active_wall = {active!r}, not in (0, wall]")
             ppe = record.get("ppe", {})
             for field in PPE:
                 if field not in ppe:

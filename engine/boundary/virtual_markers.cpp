@@ -7,12 +7,17 @@
 
 namespace washout {
 
-void mark_active_boundary(const NeighborList& list, const Particles& p,
-                          std::vector<std::uint8_t>& active) {
+std::size_t mark_active_boundary(const NeighborList& list, const Particles& p,
+                                 std::vector<std::uint8_t>& active) {
   active.assign(p.size(), 0);
+  std::size_t count = 0;
   for (std::size_t i = 0; i < list.size(); ++i)
     for (std::uint64_t k = list.offset[i]; k < list.offset[i + 1]; ++k)
-      if (list.index[k] >= p.fluid_count) active[list.index[k]] = 1;
+      if (list.index[k] >= p.fluid_count && !active[list.index[k]]) {
+        active[list.index[k]] = 1;
+        ++count;
+      }
+  return count;
 }
 
 void update_marker_velocities(const SphContext& ctx, const NeighborGrid& grid, const Particles& p,

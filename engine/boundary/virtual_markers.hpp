@@ -14,9 +14,10 @@
 
 namespace washout {
 
-// Marks the boundary particles that some fluid particle sees (the only ones worth updating).
-void mark_active_boundary(const NeighborList& list, const Particles& p,
-                          std::vector<std::uint8_t>& active);
+// Marks the boundary particles that some fluid particle sees (the only ones worth updating) and
+// returns how many there are.
+std::size_t mark_active_boundary(const NeighborList& list, const Particles& p,
+                                 std::vector<std::uint8_t>& active);
 
 void update_marker_velocities(const SphContext& ctx, const NeighborGrid& grid, const Particles& p,
                               const std::vector<std::uint8_t>& active, const WallConditions& walls,

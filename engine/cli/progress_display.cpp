@@ -79,9 +79,12 @@ void print_summary(std::FILE* out, const Simulation& sim, const RunSummary& s) {
                s.steps, s.wall_seconds);
   if (!s.message.empty()) std::fprintf(out, "  %s\n", s.message.c_str());
   const double particle_steps = double(s.fluid_particles) * double(s.steps);
-  std::fprintf(out, "  particles: %zu fluid, %zu boundary; %.3g fluid particle-steps/s\n",
-               s.fluid_particles, s.boundary_particles,
-               s.wall_seconds > 0 ? particle_steps / s.wall_seconds : 0.0);
+  std::fprintf(
+      out,
+      "  particles: %zu fluid, %zu boundary (%.0f of them seen by the fluid, mean over the "
+      "steps); %.3g fluid particle-steps/s\n",
+      s.fluid_particles, s.boundary_particles, s.mean_active_boundary,
+      s.wall_seconds > 0 ? particle_steps / s.wall_seconds : 0.0);
   std::fprintf(out, "  pressure solve: %.1f iterations per step (%s)\n", s.mean_ppe_iterations,
                sim.params().solver.c_str());
   std::fprintf(out, "  fluid particles found inside walls: %ld\n", s.wall_crossings);

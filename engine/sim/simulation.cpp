@@ -238,7 +238,7 @@ void Simulation::run_stage(Stage stage, StepInProgress& now) {
           detect_free_surface(ctx_, neighbors_, particles_, prm.free_surface_threshold, work_);
       return;
     case Stage::wall_markers:
-      mark_active_boundary(neighbors_, particles_, active_boundary_);
+      total_active_boundary_ += mark_active_boundary(neighbors_, particles_, active_boundary_);
       update_marker_velocities(ctx_, grid_, particles_, active_boundary_, walls_, work_.boundary);
       return;
     case Stage::squeeze_film:

@@ -64,6 +64,9 @@ struct RunSummary {
   double wall_seconds = 0.0;
   std::size_t fluid_particles = 0, boundary_particles = 0;
   double mean_ppe_iterations = 0.0;
+  // Boundary (wall, gate, body) particles within a fluid particle's support, the only ones the
+  // step's marker, assembly and corrector work touches; a mean over the steps.
+  double mean_active_boundary = 0.0;
   long wall_crossings = 0;            // fluid particles found inside a wall, summed over steps
   long gap_relocations = 0;           // of those, moved out of a closing gap (free_spot.hpp)
   std::size_t retired_particles = 0;  // fluid that left the domain and was retired
@@ -220,6 +223,7 @@ class Simulation {
     long step = 0;
   } first_retirement_;  // when the first of retired_ left, for the summary
   long total_ppe_iterations_ = 0;
+  double total_active_boundary_ = 0.0;  // boundary particles some fluid particle sees, summed
   std::vector<double> probe_values_;
   StepReport last_report_;
 };
