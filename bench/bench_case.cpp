@@ -2,7 +2,8 @@
 // run cost (bench/run composes the cases; docs/performance.md explains every field). A
 // benchmark, never a test: the figures depend on the machine and on what else runs on it.
 //   bench_case --case NAME SCENE.lua [--dim D] [--out DIR] [--threads N]
-//              [--set NAME=VALUE ...] [--stream BYTES_PER_SECOND] [--amg-reuse N]
+//              [--set NAME=VALUE ...] [--stream BYTES_PER_SECOND] [--amg-reuse N] [--amg-cycle
+//              threaded|hypre]
 #include <omp.h>
 
 #include <cmath>
@@ -41,7 +42,8 @@ std::string number(double v) {
 int usage() {
   std::fprintf(stderr,
                "usage: bench_case --case NAME SCENE.lua [--dim D] [--out DIR] [--threads N] "
-               "[--set NAME=VALUE ...] [--stream BYTES_PER_SECOND] [--amg-reuse N]\n");
+               "[--set NAME=VALUE ...] [--stream BYTES_PER_SECOND] [--amg-reuse N] [--amg-cycle "
+               "threaded|hypre]\n");
   return 1;
 }
 
@@ -65,6 +67,14 @@ int main(int argc, char** argv) {
       request.threads = std::atoi(argv[++k]);
     } else if (a == "--amg-reuse" && has_value) {
       washout::default_amg_options().reuse_solves = std::atoi(argv[++k]);
+    } else if (a == "--amg-cycle" && has_value) {
+      const std::string cycle = argv[++k];
+      if (cycle != "threaded" && cycle != "hypre") {
+        std::fprintf(stderr, "bench_case: --amg-cycle takes threaded or hypre, not '%s'\n",
+                     cycle.c_str());
+        return 1;
+      }
+      washout::default_amg_options().threaded_cycle = cycle == "threaded";
     } else if (a == "--dim" && has_value) {
       dim = std::atoi(argv[++k]);
     } else if (a == "--stream" && has_value) {

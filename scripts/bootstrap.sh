@@ -79,7 +79,7 @@ case "$mode" in
     # The solver tests start MPI (hypre): Open MPI's MPI_Init leaves allocations made by plugins
     # it unloads again, whose stacks no suppression can name, so those tests run with the leak
     # check off (AddressSanitizer and UBSan still on); every other test checks leaks too.
-    mpi_tests='^unit\.(PressureSolvers|PressurePoisson)\.'
+    mpi_tests='^unit\.(PressureSolvers|PressurePoisson|ThreadedVCycle)\.'
     ctest --output-on-failure -j "$jobs" -R '^(unit\.|reliability\.BrokenInputs\.)' -E "$mpi_tests"
     ASAN_OPTIONS="$ASAN_OPTIONS:detect_leaks=0" ctest --output-on-failure -j "$jobs" -R "$mpi_tests"
     ;;

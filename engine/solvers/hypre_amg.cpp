@@ -25,6 +25,7 @@
 #include "engine/solvers/linear_solver.hpp"
 #include "engine/solvers/preconditioner.hpp"
 #include "engine/solvers/solver_counters.hpp"
+#include "engine/solvers/threaded_vcycle.hpp"
 
 namespace washout {
 namespace {
@@ -121,6 +122,18 @@ hypre_ParVector* make_vector(std::size_t n) {
 
 HYPRE_Real* data(hypre_ParVector* v) { return hypre_VectorData(hypre_ParVectorLocalVector(v)); }
 
+// A one-rank ParCSR matrix's arrays (its diag block holds everything).
+CsrView view(hypre_ParCSRMatrix* M) {
+  hypre_CSRMatrix* d = hypre_ParCSRMatrixDiag(M);
+  CsrView v;
+  v.rows = static_cast<std::size_t>(hypre_CSRMatrixNumRows(d));
+  v.columns = static_cast<std::size_t>(hypre_CSRMatrixNumCols(d));
+  v.row_start = hypre_CSRMatrixI(d);
+  v.column = hypre_CSRMatrixJ(d);
+  v.value = hypre_CSRMatrixData(d);
+  return v;
+}
+
 class BoomerAmg final : public Preconditioner {
  public:
   explicit BoomerAmg(const AmgOptions& options) : options_(options) {
@@ -164,6 +177,7 @@ class BoomerAmg final : public Preconditioner {
       stale_ = false;
       ++counters.setups;
       record_hierarchy(A);
+      build_threaded_cycle();
     }
     ++uses_;
     counters.setup_seconds += seconds_since(start);
@@ -180,6 +194,10 @@ class BoomerAmg final : public Preconditioner {
   void apply(const std::vector<double>& r, std::vector<double>& z) override {
     const std::size_t n = r.size();
     z.resize(n);
+    if (threaded_) {
+      vcycle_.apply(view(matrix_ ? matrix_ : setup_matrix_), r.data(), z.data());
+      return;
+    }
     HYPRE_Real* f = data(f_);
     HYPRE_Real* u = data(u_);
     for (std::size_t i = 0; i < n; ++i) {
@@ -213,6 +231,23 @@ class BoomerAmg final : public Preconditioner {
     HYPRE_BoomerAMGSetCycleRelaxType(amg_, 9, 3);
     HYPRE_BoomerAMGSetRelaxOrder(amg_, 0);
     HYPRE_BoomerAMGSetNumSweeps(amg_, 1);
+  }
+
+  // The threaded V-cycle on the hierarchy just built (its coarse levels and interpolations stay
+  // hypre's; level 0 is each solve's own matrix, as in hypre's cycle).
+  void build_threaded_cycle() {
+    auto* data = reinterpret_cast<hypre_ParAMGData*>(amg_);
+    const int levels = hypre_ParAMGDataNumLevels(data);
+    // A fine level too small for two default blocks would sweep on one thread anyway: hypre's
+    // cycle there, unless a block size was asked for.
+    const std::size_t rows = std::size_t(hypre_ParCSRMatrixGlobalNumRows(setup_matrix_));
+    threaded_ = options_.threaded_cycle && levels >= 2 &&
+                (options_.cycle_block_rows > 0 || rows >= 2 * ThreadedVCycle::kDefaultBlockRows);
+    if (!threaded_) return;
+    std::vector<CsrView> A(levels), P(levels - 1);
+    for (int l = 1; l < levels; ++l) A[l] = view(hypre_ParAMGDataAArray(data)[l]);
+    for (int l = 0; l + 1 < levels; ++l) P[l] = view(hypre_ParAMGDataPArray(data)[l]);
+    vcycle_.build(A, P, options_.cycle_block_rows);
   }
 
   void record_hierarchy(const CsrMatrix& A) {
@@ -256,6 +291,8 @@ class BoomerAmg final : public Preconditioner {
   hypre_ParCSRMatrix* setup_matrix_ = nullptr;  // the matrix the hierarchy was built from
   hypre_ParCSRMatrix* matrix_ = nullptr;        // a later matrix it preconditions (reuse)
   hypre_ParVector *f_ = nullptr, *u_ = nullptr;
+  ThreadedVCycle vcycle_;
+  bool threaded_ = false;  // the V-cycle is vcycle_'s, not hypre's
   std::size_t rows_ = 0;
   int uses_ = 0;               // solves since the last set-up
   int fresh_iterations_ = -1;  // iterations of the first solve after it

@@ -57,6 +57,12 @@ struct AmgOptions {
   // Smoothers going down and coming up the V-cycle: forward then backward l1-Gauss-Seidel (13,
   // 14) make the cycle symmetric, as CG needs, with one sweep each way.
   int relax_down = 13, relax_up = 14;
+  // The V-cycle on all threads (threaded_vcycle.hpp: the same cycle with the Gauss-Seidel sweep
+  // in row blocks of cycle_block_rows) instead of hypre's own, which runs on one thread in
+  // Debian's build. With one block it is hypre's cycle. cycle_block_rows = 0: its default, and
+  // hypre's cycle for a matrix too small for two such blocks.
+  bool threaded_cycle = true;
+  std::size_t cycle_block_rows = 0;
 };
 
 std::unique_ptr<LinearSolver> make_cholmod_solver();

@@ -1,0 +1,162 @@
+#include "engine/solvers/threaded_vcycle.hpp"
+
+#include <algorithm>
+#include <stdexcept>
+#include <string>
+
+namespace washout {
+namespace {
+
+// A coarsest level larger than this is not factorised densely (hypre's coarsest levels hold a
+// few rows; one this large means the coarsening stalled).
+constexpr std::size_t kMaxDenseRows = 8000;
+
+}  // namespace
+
+void ThreadedVCycle::build(const std::vector<CsrView>& levels,
+                           const std::vector<CsrView>& interpolation, std::size_t block_rows) {
+  if (levels.size() != interpolation.size() + 1)
+    throw std::invalid_argument("V-cycle: one interpolation per level below the finest");
+  levels_ = levels;
+  interpolation_ = interpolation;
+  block_rows_ = block_rows > 0 ? block_rows : kDefaultBlockRows;
+  const std::size_t count = levels_.size();
+  restriction_.assign(interpolation_.size(), {});
+  for (std::size_t l = 0; l < interpolation_.size(); ++l) {
+    // P_l^T by a counting pass over P_l's columns (the coarse rows).
+    const CsrView& P = interpolation_[l];
+    Transposed& R = restriction_[l];
+    R.row_start.assign(P.columns + 1, 0);
+    const int nnz = P.row_start[P.rows];
+    for (int k = 0; k < nnz; ++k) ++R.row_start[P.column[k] + 1];
+    for (std::size_t c = 0; c < P.columns; ++c) R.row_start[c + 1] += R.row_start[c];
+    R.column.resize(nnz);
+    R.value.resize(nnz);
+    std::vector<int> next(R.row_start.begin(), R.row_start.end() - 1);
+    for (std::size_t i = 0; i < P.rows; ++i)
+      for (int k = P.row_start[i]; k < P.row_start[i + 1]; ++k) {
+        const int slot = next[P.column[k]]++;
+        R.column[slot] = static_cast<int>(i);
+        R.value[slot] = P.value[k];
+      }
+  }
+  residual_.assign(count, {});
+  coarse_b_.assign(count, {});
+  coarse_x_.assign(count, {});
+  before_.assign(count, {});
+  for (std::size_t l = 0; l < count; ++l) {
+    const std::size_t rows =
+        l == 0 ? interpolation_.empty() ? 0 : interpolation_[0].rows : levels_[l].rows;
+    residual_[l].resize(rows);
+    before_[l].resize(rows);
+    coarse_b_[l].resize(rows);
+    coarse_x_[l].resize(rows);
+  }
+  // The coarsest level (or the only one) by a dense factorisation, as hypre's Gaussian
+  // elimination there.
+  coarse_rows_ = 0;
+  if (count > 1) {
+    const CsrView& C = levels_.back();
+    if (C.rows > kMaxDenseRows)
+      throw std::runtime_error("V-cycle: coarsest level of " + std::to_string(C.rows) +
+                               " rows, too large to factorise densely");
+    Eigen::MatrixXd dense = Eigen::MatrixXd::Zero(C.rows, C.rows);
+    for (std::size_t i = 0; i < C.rows; ++i)
+      for (int k = C.row_start[i]; k < C.row_start[i + 1]; ++k) dense(i, C.column[k]) += C.value[k];
+    coarsest_.compute(dense);
+    coarse_rows_ = C.rows;
+  }
+}
+
+void ThreadedVCycle::sweep(const CsrView& A, const double* b, double* x, bool forward,
+                           std::vector<double>& old) {
+  const std::size_t n = A.rows;
+  const std::size_t blocks = std::max<std::size_t>(1, n / block_rows_);
+  if (blocks == 1) {
+    // One block: plain lexicographic Gauss-Seidel.
+    const auto relax = [&](std::size_t i) {
+      const int first = A.row_start[i];
+      double s = b[i];
+      for (int k = first + 1; k < A.row_start[i + 1]; ++k) s -= A.value[k] * x[A.column[k]];
+      x[i] = s / A.value[first];
+    };
+    if (forward)
+      for (std::size_t i = 0; i < n; ++i) relax(i);
+    else
+      for (std::size_t i = n; i-- > 0;) relax(i);
+    return;
+  }
+  // Values outside a row's block come from before the sweep.
+  std::copy(x, x + n, old.begin());
+#pragma omp parallel for schedule(static)
+  for (std::size_t blk = 0; blk < blocks; ++blk) {
+    const std::size_t lo = n * blk / blocks, hi = n * (blk + 1) / blocks;
+    const auto relax = [&](std::size_t i) {
+      const int first = A.row_start[i];
+      double s = b[i];
+      for (int k = first + 1; k < A.row_start[i + 1]; ++k) {
+        const std::size_t j = static_cast<std::size_t>(A.column[k]);
+        s -= A.value[k] * (j >= lo && j < hi ? x[j] : old[j]);
+      }
+      x[i] = s / A.value[first];
+    };
+    if (forward)
+      for (std::size_t i = lo; i < hi; ++i) relax(i);
+    else
+      for (std::size_t i = hi; i-- > lo;) relax(i);
+  }
+}
+
+void ThreadedVCycle::cycle(std::size_t level, const CsrView& A, const double* b, double* x) {
+  const std::size_t n = A.rows;
+  if (level + 1 == levels_.size() && level > 0) {
+    // The coarsest level: solved exactly.
+    Eigen::Map<const Eigen::VectorXd> rhs(b, static_cast<Eigen::Index>(n));
+    Eigen::Map<Eigen::VectorXd>(x, static_cast<Eigen::Index>(n)) = coarsest_.solve(rhs);
+    return;
+  }
+  std::fill(x, x + n, 0.0);
+  sweep(A, b, x, /*forward=*/true, before_[level]);
+  if (level + 1 == levels_.size()) {  // a one-level "hierarchy": the sweeps alone
+    sweep(A, b, x, /*forward=*/false, before_[level]);
+    return;
+  }
+  // r = b - A x, then b_c = P^T r.
+  std::vector<double>& r = residual_[level];
+  const bool parallel = n >= 2 * block_rows_;
+#pragma omp parallel for schedule(static) if (parallel)
+  for (std::size_t i = 0; i < n; ++i) {
+    double s = b[i];
+    for (int k = A.row_start[i]; k < A.row_start[i + 1]; ++k) s -= A.value[k] * x[A.column[k]];
+    r[i] = s;
+  }
+  const Transposed& R = restriction_[level];
+  const CsrView& P = interpolation_[level];
+  std::vector<double>& bc = coarse_b_[level + 1];
+  std::vector<double>& xc = coarse_x_[level + 1];
+  const std::size_t nc = P.columns;
+#pragma omp parallel for schedule(static) if (parallel)
+  for (std::size_t c = 0; c < nc; ++c) {
+    double s = 0.0;
+    for (int k = R.row_start[c]; k < R.row_start[c + 1]; ++k) s += R.value[k] * r[R.column[k]];
+    bc[c] = s;
+  }
+  cycle(level + 1, levels_[level + 1], bc.data(), xc.data());
+  // x += P x_c, then the backward sweep.
+#pragma omp parallel for schedule(static) if (parallel)
+  for (std::size_t i = 0; i < n; ++i) {
+    double s = 0.0;
+    for (int k = P.row_start[i]; k < P.row_start[i + 1]; ++k) s += P.value[k] * xc[P.column[k]];
+    x[i] += s;
+  }
+  sweep(A, b, x, /*forward=*/false, before_[level]);
+}
+
+void ThreadedVCycle::apply(const CsrView& fine, const double* r, double* z) {
+  if (levels_.empty()) throw std::logic_error("V-cycle: apply() before build()");
+  residual_[0].resize(fine.rows);
+  before_[0].resize(fine.rows);
+  cycle(0, fine, r, z);
+}
+
+}  // namespace washout

@@ -1,0 +1,61 @@
+#pragma once
+// One multigrid V-cycle on a hierarchy built elsewhere (BoomerAMG's, hypre_amg.cpp), run on all
+// threads. Debian's hypre is built without OpenMP, so its own V-cycle runs on one thread while
+// the conjugate gradient around it runs on all: at the paper's resolution the V-cycles were
+// most of the pressure solve (docs/performance.md). The cycle is hypre's V(1,1) with the
+// lexicographic Gauss-Seidel sweep split into row blocks ("hybrid" Gauss-Seidel): each block
+// sweeps its own rows in order, reading the other blocks' values from before the sweep, so the
+// blocks run in parallel. Going down the sweep is forward, coming up backward over the same
+// blocks: the cycle stays a symmetric operator, as CG needs. The blocks depend on the matrix's
+// size only, never on the thread count, so a run's results do not change with the threads;
+// with one block the cycle is hypre's (tests/unit/test_threaded_vcycle.cpp).
+#include <Eigen/Dense>
+#include <cstddef>
+#include <vector>
+
+namespace washout {
+
+// A square or rectangular matrix in compressed rows, borrowed (hypre's arrays). Rows of the
+// square ones hold their diagonal first, as hypre keeps them.
+struct CsrView {
+  std::size_t rows = 0, columns = 0;
+  const int* row_start = nullptr;
+  const int* column = nullptr;
+  const double* value = nullptr;
+};
+
+class ThreadedVCycle {
+ public:
+  // levels[l] is A_l for l >= 1 (level 0, the fine matrix, is given to apply(): a hierarchy
+  // reused across steps takes each step's new matrix there); interpolation[l] is P_l, from
+  // level l + 1 to level l. The views must stay valid until the next build(). block_rows: the
+  // rows per Gauss-Seidel block (0: the default below).
+  void build(const std::vector<CsrView>& levels, const std::vector<CsrView>& interpolation,
+             std::size_t block_rows = 0);
+  bool built() const { return !interpolation_.empty() || coarse_rows_ > 0; }
+
+  // z = M^-1 r, one V-cycle from z = 0 on the fine matrix A (the rows of levels[1]'s P_0).
+  void apply(const CsrView& fine, const double* r, double* z);
+
+  // Blocks of at least this many rows: a level smaller than two of them is swept on one
+  // thread, whole (the coarse levels), and a fine level of 2D or 3D rows splits into a few
+  // blocks whose boundaries hold a small share of the couplings.
+  static constexpr std::size_t kDefaultBlockRows = 16384;
+
+ private:
+  struct Transposed {  // P_l^T, built once per hierarchy: restriction row by row
+    std::vector<int> row_start, column;
+    std::vector<double> value;
+  };
+  void cycle(std::size_t level, const CsrView& A, const double* b, double* x);
+  // One Gauss-Seidel sweep; old: room for x before the sweep (the other blocks' values).
+  void sweep(const CsrView& A, const double* b, double* x, bool forward, std::vector<double>& old);
+
+  std::vector<CsrView> levels_, interpolation_;
+  std::vector<Transposed> restriction_;
+  std::vector<std::vector<double>> residual_, coarse_b_, coarse_x_, before_;
+  Eigen::PartialPivLU<Eigen::MatrixXd> coarsest_;
+  std::size_t coarse_rows_ = 0, block_rows_ = kDefaultBlockRows;
+};
+
+}  // namespace washout
