@@ -47,7 +47,7 @@ struct AmgOptions {
   // Solves one set-up serves while the matrix keeps its size (1: a set-up for every matrix);
   // a new set-up comes sooner when a solve takes more than stale_growth times the iterations
   // of the first solve after the set-up (plus two).
-  int reuse_solves = 5;
+  int reuse_solves = 20;
   double stale_growth = 1.5;
   double strong_threshold = 0.5;  // a connection is strong above this share of the largest
   int coarsening = 10;            // HMIS
