@@ -54,7 +54,6 @@ void ThreadedVCycle::build(const std::vector<CsrView>& levels,
   }
   // The coarsest level (or the only one) by a dense factorisation, as hypre's Gaussian
   // elimination there.
-  coarse_rows_ = 0;
   if (count > 1) {
     const CsrView& C = levels_.back();
     if (C.rows > kMaxDenseRows)
@@ -64,7 +63,6 @@ void ThreadedVCycle::build(const std::vector<CsrView>& levels,
     for (std::size_t i = 0; i < C.rows; ++i)
       for (int k = C.row_start[i]; k < C.row_start[i + 1]; ++k) dense(i, C.column[k]) += C.value[k];
     coarsest_.compute(dense);
-    coarse_rows_ = C.rows;
   }
 }
 

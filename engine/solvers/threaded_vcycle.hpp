@@ -32,7 +32,6 @@ class ThreadedVCycle {
   // rows per Gauss-Seidel block (0: the default below).
   void build(const std::vector<CsrView>& levels, const std::vector<CsrView>& interpolation,
              std::size_t block_rows = 0);
-  bool built() const { return !interpolation_.empty() || coarse_rows_ > 0; }
 
   // z = M^-1 r, one V-cycle from z = 0 on the fine matrix A (the rows of levels[1]'s P_0).
   void apply(const CsrView& fine, const double* r, double* z);
@@ -55,7 +54,7 @@ class ThreadedVCycle {
   std::vector<Transposed> restriction_;
   std::vector<std::vector<double>> residual_, coarse_b_, coarse_x_, before_;
   Eigen::PartialPivLU<Eigen::MatrixXd> coarsest_;
-  std::size_t coarse_rows_ = 0, block_rows_ = kDefaultBlockRows;
+  std::size_t block_rows_ = kDefaultBlockRows;
 };
 
 }  // namespace washout
