@@ -6,7 +6,9 @@
 // finalised at exit) and the matrix is one block. The set-up (coarsening, interpolation,
 // Galerkin coarse matrices) is the costly part; a V-cycle takes the fine matrix it is given, so
 // a hierarchy built for an earlier matrix of the same size still preconditions a later one
-// (hypre's solve replaces level 0 by the new matrix; only the coarse levels are stale).
+// (hypre's solve replaces level 0 by the new matrix; only the coarse levels are stale). The
+// V-cycle itself runs on all threads in threaded_vcycle.cpp on hypre's hierarchy, where the
+// matrix is large enough to split (Debian's hypre has no OpenMP).
 #include <mpi.h>
 // hypre's headers after mpi.h; the internal ones (_hypre_*) give the vectors' and matrices'
 // arrays, so the data is copied straight in rather than through the IJ interface.
@@ -241,7 +243,10 @@ class BoomerAmg final : public Preconditioner {
     // A fine level too small for two default blocks would sweep on one thread anyway: hypre's
     // cycle there, unless a block size was asked for.
     const std::size_t rows = std::size_t(hypre_ParCSRMatrixGlobalNumRows(setup_matrix_));
-    threaded_ = options_.threaded_cycle && levels >= 2 &&
+    // It implements the default smoother only (l1-Gauss-Seidel, 13 down and 14 up, which on one
+    // rank is Gauss-Seidel); other smoothers keep hypre's cycle.
+    const bool gauss_seidel = options_.relax_down == 13 && options_.relax_up == 14;
+    threaded_ = options_.threaded_cycle && gauss_seidel && levels >= 2 &&
                 (options_.cycle_block_rows > 0 || rows >= 2 * ThreadedVCycle::kDefaultBlockRows);
     if (!threaded_) return;
     std::vector<CsrView> A(levels), P(levels - 1);
