@@ -15,8 +15,9 @@ constexpr std::size_t kMaxDenseRows = 8000;
 
 void ThreadedVCycle::build(const std::vector<CsrView>& levels,
                            const std::vector<CsrView>& interpolation, std::size_t block_rows) {
-  if (levels.size() != interpolation.size() + 1)
-    throw std::invalid_argument("V-cycle: one interpolation per level below the finest");
+  if (levels.size() != interpolation.size() + 1 || interpolation.empty())
+    throw std::invalid_argument(
+        "V-cycle: at least two levels, one interpolation per level below the finest");
   levels_ = levels;
   interpolation_ = interpolation;
   block_rows_ = block_rows > 0 ? block_rows : kDefaultBlockRows;
@@ -44,49 +45,38 @@ void ThreadedVCycle::build(const std::vector<CsrView>& levels,
   coarse_b_.assign(count, {});
   coarse_x_.assign(count, {});
   before_.assign(count, {});
+  // Level 0's right-hand side and solution are apply()'s; the coarsest level needs neither a
+  // residual nor a sweep's copy.
   for (std::size_t l = 0; l < count; ++l) {
-    const std::size_t rows =
-        l == 0 ? interpolation_.empty() ? 0 : interpolation_[0].rows : levels_[l].rows;
-    residual_[l].resize(rows);
-    before_[l].resize(rows);
-    coarse_b_[l].resize(rows);
-    coarse_x_[l].resize(rows);
+    const std::size_t rows = l == 0 ? interpolation_[0].rows : levels_[l].rows;
+    if (l + 1 < count) {
+      residual_[l].resize(rows);
+      before_[l].resize(rows);
+    }
+    if (l > 0) {
+      coarse_b_[l].resize(rows);
+      coarse_x_[l].resize(rows);
+    }
   }
-  // The coarsest level (or the only one) by a dense factorisation, as hypre's Gaussian
-  // elimination there.
-  if (count > 1) {
-    const CsrView& C = levels_.back();
-    if (C.rows > kMaxDenseRows)
-      throw std::runtime_error("V-cycle: coarsest level of " + std::to_string(C.rows) +
-                               " rows, too large to factorise densely");
-    Eigen::MatrixXd dense = Eigen::MatrixXd::Zero(C.rows, C.rows);
-    for (std::size_t i = 0; i < C.rows; ++i)
-      for (int k = C.row_start[i]; k < C.row_start[i + 1]; ++k) dense(i, C.column[k]) += C.value[k];
-    coarsest_.compute(dense);
-  }
+  // The coarsest level by a dense factorisation, as hypre's Gaussian elimination there.
+  const CsrView& C = levels_.back();
+  if (C.rows > kMaxDenseRows)
+    throw std::runtime_error("V-cycle: coarsest level of " + std::to_string(C.rows) +
+                             " rows, too large to factorise densely");
+  Eigen::MatrixXd dense = Eigen::MatrixXd::Zero(C.rows, C.rows);
+  for (std::size_t i = 0; i < C.rows; ++i)
+    for (int k = C.row_start[i]; k < C.row_start[i + 1]; ++k) dense(i, C.column[k]) += C.value[k];
+  coarsest_.compute(dense);
 }
 
 void ThreadedVCycle::sweep(const CsrView& A, const double* b, double* x, bool forward,
                            std::vector<double>& old) {
   const std::size_t n = A.rows;
   const std::size_t blocks = std::max<std::size_t>(1, n / block_rows_);
-  if (blocks == 1) {
-    // One block: plain lexicographic Gauss-Seidel.
-    const auto relax = [&](std::size_t i) {
-      const int first = A.row_start[i];
-      double s = b[i];
-      for (int k = first + 1; k < A.row_start[i + 1]; ++k) s -= A.value[k] * x[A.column[k]];
-      x[i] = s / A.value[first];
-    };
-    if (forward)
-      for (std::size_t i = 0; i < n; ++i) relax(i);
-    else
-      for (std::size_t i = n; i-- > 0;) relax(i);
-    return;
-  }
-  // Values outside a row's block come from before the sweep.
-  std::copy(x, x + n, old.begin());
-#pragma omp parallel for schedule(static)
+  // Values outside a row's block come from before the sweep (with one block there are none:
+  // plain lexicographic Gauss-Seidel).
+  if (blocks > 1) std::copy(x, x + n, old.begin());
+#pragma omp parallel for schedule(static) if (blocks > 1)
   for (std::size_t blk = 0; blk < blocks; ++blk) {
     const std::size_t lo = n * blk / blocks, hi = n * (blk + 1) / blocks;
     const auto relax = [&](std::size_t i) {
@@ -107,7 +97,7 @@ void ThreadedVCycle::sweep(const CsrView& A, const double* b, double* x, bool fo
 
 void ThreadedVCycle::cycle(std::size_t level, const CsrView& A, const double* b, double* x) {
   const std::size_t n = A.rows;
-  if (level + 1 == levels_.size() && level > 0) {
+  if (level + 1 == levels_.size()) {
     // The coarsest level: solved exactly.
     Eigen::Map<const Eigen::VectorXd> rhs(b, static_cast<Eigen::Index>(n));
     Eigen::Map<Eigen::VectorXd>(x, static_cast<Eigen::Index>(n)) = coarsest_.solve(rhs);
@@ -115,10 +105,6 @@ void ThreadedVCycle::cycle(std::size_t level, const CsrView& A, const double* b,
   }
   std::fill(x, x + n, 0.0);
   sweep(A, b, x, /*forward=*/true, before_[level]);
-  if (level + 1 == levels_.size()) {  // a one-level "hierarchy": the sweeps alone
-    sweep(A, b, x, /*forward=*/false, before_[level]);
-    return;
-  }
   // r = b - A x, then b_c = P^T r.
   std::vector<double>& r = residual_[level];
   const bool parallel = n >= 2 * block_rows_;
@@ -152,8 +138,9 @@ void ThreadedVCycle::cycle(std::size_t level, const CsrView& A, const double* b,
 
 void ThreadedVCycle::apply(const CsrView& fine, const double* r, double* z) {
   if (levels_.empty()) throw std::logic_error("V-cycle: apply() before build()");
-  residual_[0].resize(fine.rows);
-  before_[0].resize(fine.rows);
+  if (fine.rows != interpolation_[0].rows)
+    throw std::invalid_argument("V-cycle: the fine matrix has " + std::to_string(fine.rows) +
+                                " rows, the hierarchy " + std::to_string(interpolation_[0].rows));
   cycle(0, fine, r, z);
 }
 

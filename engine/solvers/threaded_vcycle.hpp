@@ -26,14 +26,14 @@ struct CsrView {
 
 class ThreadedVCycle {
  public:
-  // levels[l] is A_l for l >= 1 (level 0, the fine matrix, is given to apply(): a hierarchy
-  // reused across steps takes each step's new matrix there); interpolation[l] is P_l, from
-  // level l + 1 to level l. The views must stay valid until the next build(). block_rows: the
-  // rows per Gauss-Seidel block (0: the default below).
+  // At least two levels. levels[l] is A_l for l >= 1 (level 0, the fine matrix, is given to
+  // apply(): a hierarchy reused across steps takes each step's new matrix there);
+  // interpolation[l] is P_l, from level l + 1 to level l. The views must stay valid until the
+  // next build(). block_rows: the rows per Gauss-Seidel block (0: the default below).
   void build(const std::vector<CsrView>& levels, const std::vector<CsrView>& interpolation,
              std::size_t block_rows = 0);
 
-  // z = M^-1 r, one V-cycle from z = 0 on the fine matrix A (the rows of levels[1]'s P_0).
+  // z = M^-1 r, one V-cycle from z = 0 on the fine matrix (as many rows as P_0).
   void apply(const CsrView& fine, const double* r, double* z);
 
   // Blocks of at least this many rows: a level smaller than two of them is swept on one
