@@ -135,7 +135,8 @@ const std::vector<ParameterInfo>& ParameterSet::engine_table() {
        d.shifting_with_speed},
       {"surface_smoothing", "-",
        "free-surface particles move with this fraction of their neighbourhood's mean velocity "
-       "(XSPH on the surface only; 0 = off)",
+       "each step (XSPH on the surface only; 0 = off): it damps harder as the step shrinks, so "
+       "compare runs at the same dt_max",
        d.surface_smoothing},
       {"output_interval", "s", "simulated time between output frames", d.output_interval},
       {"max_speed", "m/s", "a faster particle stops the run as unstable; 0 = 10 sqrt(2 g L)",
