@@ -125,6 +125,12 @@ struct GradientForms {
 void correct_velocity(const SphContext& ctx, const NeighborList& list, Particles& p,
                       const FluidWork& work, const WallConditions& walls, const Vec3& gravity,
                       double dt, const GradientForms& forms);
+// The fraction of a step of Courant number dt U / h, from the fraction set for a step of the
+// reference Courant number: 1 - (1 - f_ref)^(C / C_ref), so the smoothing is a rate in the
+// distance travelled and two half steps smooth as much as one whole. A reference of 0: the
+// fraction is taken every step, whatever its size.
+double surface_smoothing_for_step(double fraction_at_reference, double courant,
+                                  double reference_courant);
 // Free-surface particles take this fraction of their neighbourhood's mean velocity (XSPH on the
 // surface only; surface_smoothing.cpp).
 void smooth_surface_velocity(const SphContext& ctx, const NeighborList& list, Particles& p,

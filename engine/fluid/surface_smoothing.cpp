@@ -2,11 +2,22 @@
 // in METHOD.md): free-surface particles move with a fraction of their neighbourhood's
 // kernel-weighted mean velocity (XSPH, Monaghan 1989, on the surface only). Without it surface
 // particles drifted away from the bulk and grew a slosh instability near the walls within 0.5 s.
+// The fraction is taken every step, or, as an option, as a rate: set for a step of a reference
+// Courant number and compounded for the step actually taken, so that the flow does not depend
+// on the step (docs/method.md, twelfth session).
 #include <cmath>
 
 #include "engine/fluid/isph_stages.hpp"
 
 namespace washout {
+
+double surface_smoothing_for_step(double fraction_at_reference, double courant,
+                                  double reference_courant) {
+  if (!(reference_courant > 0.0)) return fraction_at_reference;  // per step
+  if (fraction_at_reference <= 0.0 || courant <= 0.0) return 0.0;
+  // (1 - f)^(C / C_ref): k steps of C_ref / k leave the same share unsmoothed as one of C_ref.
+  return 1.0 - std::pow(1.0 - fraction_at_reference, courant / reference_courant);
+}
 
 void smooth_surface_velocity(const SphContext& ctx, const NeighborList& list, Particles& p,
                              const FluidWork& work, double surface_smoothing,

@@ -135,9 +135,17 @@ const std::vector<ParameterInfo>& ParameterSet::engine_table() {
        d.shifting_with_speed},
       {"surface_smoothing", "-",
        "free-surface particles move with this fraction of their neighbourhood's mean velocity "
-       "each step (XSPH on the surface only; 0 = off): it damps harder as the step shrinks, so "
-       "compare runs at the same dt_max",
+       "each step (XSPH on the surface only; 0 = off), or with surface_smoothing_courant > 0 in "
+       "a step of that Courant number: it then is a rate and the flow does not depend on the "
+       "step",
        d.surface_smoothing},
+      {"surface_smoothing_courant", "-",
+       "0: surface_smoothing is taken every step (its damping grows as the step shrinks); > 0: "
+       "the Courant number C_ref = dt U / h (U: the fastest fluid particle, at least sqrt(g H)) "
+       "of the step that takes it, a step of Courant number C taking 1 - (1 - s)^(C / C_ref); "
+       "0.2 (the default cfl) with surface_gradient = \"ghost\" makes the front independent of "
+       "the step (docs/method.md, twelfth session)",
+       d.surface_smoothing_courant},
       {"output_interval", "s", "simulated time between output frames", d.output_interval},
       {"max_speed", "m/s", "a faster particle stops the run as unstable; 0 = 10 sqrt(2 g L)",
        d.max_speed},
@@ -386,6 +394,7 @@ SimulationParameters SimulationParameters::from(const ParameterSet& set) {
   p.shifting = non_negative("shifting");
   p.shifting_with_speed = non_negative("shifting_with_speed");
   p.surface_smoothing = in_unit_interval("surface_smoothing");
+  p.surface_smoothing_courant = non_negative("surface_smoothing_courant");
   p.output_interval = positive("output_interval");
   // Every frame (and the end) is reached by at least one step, and an adaptive step may not be
   // shorter than dt_min: a frame or an end sooner than that would stop the run as "unstable".

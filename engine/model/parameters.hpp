@@ -93,14 +93,16 @@ struct SimulationParameters {
   int solver_max_iterations = 5000;
   std::string pressure_gradient = "symmetric";
   // "ghost" holds the surface without smoothing and floats bodies at their draft, but moves the
-  // validated surges (docs/method.md, ninth session): an option until they are re-validated.
+  // validated surges and, with the smoothing as a rate, jets water through the gate's first gap
+  // in the coarse 3D wash-out (docs/method.md, ninth and twelfth sessions): an option.
   std::string surface_gradient = "corrected";
   // Walls in the divergence for every scene: the Neumann form made thin films on no-slip walls
   // alternate and blow up (docs/method.md).
   std::string wall_pressure = "dynamic";
   double shifting = 0.0;
   double shifting_with_speed = 2.0;
-  double surface_smoothing = 0.5;
+  double surface_smoothing = 0.5;          // fraction per step, or per step of Courant number ...
+  double surface_smoothing_courant = 0.0;  // ... this, a rate (0: per step; docs/method.md)
   double output_interval = 0.05;
   double max_speed = 0.0;              // 0: automatic from gravity and domain size
   double energy_gain_limit = 0.1;      // energy guard tolerance, a fraction of M g H; 0: off

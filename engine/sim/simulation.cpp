@@ -163,6 +163,14 @@ TimeStepChoice Simulation::choose_time_step(double until) const {
   return washout::choose_time_step(in);
 }
 
+// The Courant number dt U / h of a step at the flow's speed scale: the fastest fluid particle,
+// and at least the shallow-water speed sqrt(g H), so that still water has a scale too.
+double Simulation::step_courant(double dt) const {
+  const double speed =
+      std::max(max_speed_, std::sqrt(model_.params.gravity.norm() * fluid_height_));
+  return dt * speed / ctx_.h;
+}
+
 double Simulation::mechanical_energy() const {
   const Vec3& g = model_.params.gravity;
   double energy = fluid_mechanical_energy(particles_, ctx_.mass, g);
@@ -293,7 +301,9 @@ void Simulation::run_stage(Stage stage, StepInProgress& now) {
                        gradient_forms_);
       return;
     case Stage::surface_smoothing:
-      smooth_surface_velocity(ctx_, neighbors_, particles_, work_, prm.surface_smoothing,
+      smooth_surface_velocity(ctx_, neighbors_, particles_, work_,
+                              surface_smoothing_for_step(prm.surface_smoothing, step_courant(dt),
+                                                         prm.surface_smoothing_courant),
                               shift_scratch_);
       return;
     case Stage::advect:

@@ -155,6 +155,7 @@ class Simulation {
  private:
   TimeStepChoice choose_time_step(double until) const;
   // Kinetic plus potential energy of the fluid and the dynamic bodies.
+  double step_courant(double dt) const;
   double mechanical_energy() const;
   void check_energy(StepReport& report);
   void check_health(StepReport& report);
