@@ -35,12 +35,21 @@ constexpr double kDryFluidFraction = 0.05;
 // Above this fluid fraction a point counts as wet (under water) rather than near the surface.
 constexpr double kWetFluidFraction = 0.5;
 
+// The most the linear weights may amplify the fluid's values: sum_f |w_f|, the Lebesgue
+// constant of the fit (1 for Shepard weights, 1.0-1.01 at the mirror points of a flat wall). Beyond
+// it m lies outside the fluid the fit is made from (a mirror point in a slot narrower than the
+// support, or past the few particles at a flow's tip) and the fit extrapolates: at the lifting gate
+// of the 3D wash-out it gave markers of 10-33 m/s from fluid moving at 1 m/s (docs/method.md,
+// twelfth session).
+constexpr double kMaxLinearAmplification = 2.0;
+
 // Linear moving-least-squares interpolation at m over the fluid particles: the weights
 // w_f = W(m - x_f) (p_f . beta), p_f = (1, x_f - m), with beta = A^-1 e_1 and
 // A = sum_f W p_f p_f^T, reproduce linear fields exactly even where the fluid lies on one side
 // of m only (next to a wall), where the plain Shepard average is biased towards the interior.
 // Calls visit(f, w_f) (the weights sum to 1); falls back to Shepard weights where the fluid is
-// too sparse to fit a gradient. Returns the fluid fraction at m as accumulate_fluid_at does.
+// too sparse to fit a gradient or the fit would amplify the values more than
+// kMaxLinearAmplification. Returns the fluid fraction at m as accumulate_fluid_at does.
 template <class Visit>
 double interpolate_fluid_linear(const SphContext& ctx, const NeighborGrid& grid, const Particles& p,
                                 const double m[3], Visit&& visit) {
@@ -64,16 +73,18 @@ double interpolate_fluid_linear(const SphContext& ctx, const NeighborGrid& grid,
     beta = ldlt.solve(Eigen::Vector4d(1.0, 0.0, 0.0, 0.0));
     linear = beta.allFinite();
   }
-  const double shepard = 1.0 / A(0, 0);
-  for (const auto& [f, w] : near) {
-    if (!linear) {
-      visit(f, w * shepard);
-      continue;
-    }
+  const auto linear_weight = [&](std::uint32_t f, double w) {
     double q_dot_beta = beta[0];
     for (int a = 0; a < ctx.dim; ++a) q_dot_beta += (p.position[a][f] - m[a]) * scale * beta[a + 1];
-    visit(f, w * q_dot_beta);
+    return w * q_dot_beta;
+  };
+  if (linear) {
+    double amplification = 0.0;
+    for (const auto& [f, w] : near) amplification += std::abs(linear_weight(f, w));
+    linear = amplification <= kMaxLinearAmplification;
   }
+  const double shepard = 1.0 / A(0, 0);
+  for (const auto& [f, w] : near) visit(f, linear ? linear_weight(f, w) : w * shepard);
   return fraction;
 }
 

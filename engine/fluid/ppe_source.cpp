@@ -16,8 +16,12 @@ namespace {
 
 // The dynamic wall's markers also hold the wall's clearance near the free surface, where the
 // density-invariance term is off: a particle closer than 0.4 d0 to the nearest wall's surface
-// meets that wall's markers coming back at half the shortfall per step. (The lattice puts the
-// first layer at d0/2; holding that exactly fed the noise of still water.)
+// meets that wall's markers coming back at half the shortfall per step, at most at the speed of
+// a fall through one spacing, sqrt(|g| d0). (The lattice puts the first layer at d0/2; holding
+// that exactly fed the noise of still water. The clearance undoes slow settling; a faster
+// approach is an impact, which the mirrored markers stop. Uncapped, half the shortfall per step
+// grows as 1/dt: particles squeezed to 0.2 d0 under the lifting gate of the 3D wash-out were
+// pushed out at 2 m/s by pressures of 50-180 kPa; docs/method.md, twelfth session.)
 // The mirrored velocity only stops an approach; without this the bottom particles of a thin
 // flow on a no-slip floor settle towards it (to a fortieth of a spacing at a/20) and, where the
 // flow hits a wall, are driven through the floor. The nearest wall particle gives the wall, and
@@ -31,7 +35,7 @@ struct WallClearance {
 };
 
 WallClearance wall_clearance(const SphContext& ctx, const NeighborList& list, const Particles& p,
-                             std::size_t i, double dt) {
+                             std::size_t i, double dt, double max_speed) {
   WallClearance c;
   const NearestBoundary nearest = nearest_boundary(ctx, list, p, i, /*skip_bodies=*/false);
   if (nearest.index == p.size()) return c;
@@ -41,7 +45,8 @@ WallClearance wall_clearance(const SphContext& ctx, const NeighborList& list, co
   // corner can point along the diagonal.
   const double y = std::sqrt(nearest.r2) - p.wall_distance[c.wall];
   if (y < kClearance * ctx.d0)
-    c.speed = kClearanceRelaxation * (kClearance * ctx.d0 - std::max(y, 0.0)) / dt;
+    c.speed =
+        std::min(max_speed, kClearanceRelaxation * (kClearance * ctx.d0 - std::max(y, 0.0)) / dt);
   return c;
 }
 
@@ -52,6 +57,10 @@ void subtract_ppe_source(const SphContext& ctx, const NeighborList& list, const 
                          const PpeRowFlags& flags, FluidWork& work) {
   const std::size_t n = p.fluid_count;
   const double density_scale = alpha * ctx.rho0 / (dt * dt);
+  // Without gravity nothing settles and nothing sets a speed: the clearance is uncapped.
+  const double g = gravity.norm();
+  const double clearance_speed =
+      g > 0.0 ? std::sqrt(g * ctx.d0) : std::numeric_limits<double>::infinity();
 #pragma omp parallel for schedule(static)
   for (std::size_t i = 0; i < n; ++i) {
     const std::int32_t row = work.unknown[i];
@@ -60,8 +69,9 @@ void subtract_ppe_source(const SphContext& ctx, const NeighborList& list, const 
     // Near the surface, where the density-invariance term is off (below), nothing else holds
     // the wall's clearance; inside, that term does.
     const bool near_surface = flags.touches_surface[row] != 0;
-    const WallClearance clearance =
-        walls.dynamic && near_surface ? wall_clearance(ctx, list, p, i, dt) : WallClearance{};
+    const WallClearance clearance = walls.dynamic && near_surface
+                                        ? wall_clearance(ctx, list, p, i, dt, clearance_speed)
+                                        : WallClearance{};
     const double div_u =
         divergence(ctx, list, p, i, u_i, [&](const NeighborPair& q, double u_j[3]) {
           const std::size_t j = q.j;

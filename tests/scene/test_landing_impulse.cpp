@@ -59,10 +59,12 @@ Landing land(double dt) {
 //  - momentum balance: the report integrates the same per-step loads the integrator applied,
 //    so J_f + J_c - W D = M dv holds to round-off (measured 1e-13 N s/m); 1e-9 M |v| allows
 //    for summing some hundred rows;
-//  - the fluid impulse over the landing at dt = 0.25 and 1 ms within 15 %: the study of
-//    docs/stability.md found it within 3 % at this d0 and at most 12 % apart at any d0 across
-//    the same 4x in dt;
-//  - the raw one-step peaks apart by more than the impulses (measured 1.8x against 1.03x): the
+//  - the fluid impulse over the landing at dt = 0.25 and 1 ms within 25 %: over dt = 0.25,
+//    0.5, 0.75 and 1 ms it spreads by 19 %, 17 % and 22 % (largest over smallest, less one) at
+//    d0 = 0.01, 0.0075 and 0.005 m, and by 18 %, 24 % and 27 % before the markers' bound on
+//    extrapolation (docs/stability.md, "Landing loads", twelfth session), so any two steps can
+//    be that far apart (measured here 16 %; 3 % before, a pair that happened to agree);
+//  - the raw one-step peaks apart by more than the impulses (measured 2.4x against 1.19x): the
 //    reason the raw peak is not the load to design with.
 TEST(LandingImpulse, TheSinkingBoxsLandingImpulseDoesNotDependOnDt) {
   const Landing fine = land(0.00025), coarse = land(0.001);
@@ -76,7 +78,7 @@ TEST(LandingImpulse, TheSinkingBoxsLandingImpulseDoesNotDependOnDt) {
     EXPECT_LT(l.impulse, 0.0);  // the water the box carries pushes it down as it stops
     EXPECT_LT(std::abs(l.balance), 1e-9 * std::abs(l.momentum));
   }
-  EXPECT_LT(std::abs(impulse_ratio - 1.0), 0.15);
+  EXPECT_LT(std::abs(impulse_ratio - 1.0), 0.25);
   EXPECT_GT(std::abs(std::log(raw_ratio)), std::abs(std::log(impulse_ratio)));
 }
 
