@@ -93,8 +93,7 @@ struct SimulationParameters {
   int solver_max_iterations = 5000;
   std::string pressure_gradient = "symmetric";
   // "ghost" holds the surface without smoothing and floats bodies at their draft, but moves the
-  // validated surges and, with the smoothing as a rate, jets water through the gate's first gap
-  // in the coarse 3D wash-out (docs/method.md, ninth and twelfth sessions): an option.
+  // validated surges (docs/method.md, ninth and twelfth sessions): an option.
   std::string surface_gradient = "corrected";
   // Walls in the divergence for every scene: the Neumann form made thin films on no-slip walls
   // alternate and blow up (docs/method.md).

@@ -203,8 +203,8 @@ TEST(DamBreak, WithoutSmoothingTheFrontDoesNotDependOnTheStep) {
 
 // The twelfth session's option (docs/method.md): the smoothing as a rate in the distance
 // travelled (surface_smoothing_courant = 0.2) with the ghost surface gradient, and the front no
-// longer depends on the step. Z at T = 1.19 with dt_max = 1 and 0.5 ms: 1.557 / 1.563 at a/10
-// and 1.648 / 1.651 at a/20 (the per-step default moves them by 0.087 and 0.032). Bound: 0.02
+// longer depends on the step. Z at T = 1.19 with dt_max = 1 and 0.5 ms: 1.559 / 1.565 at a/10
+// and 1.648 / 1.653 at a/20 (the per-step default moves them by 0.087 and 0.032). Bound: 0.02
 // for the halving, three times the largest change measured and under the a/10 to a/20 step of
 // 0.09; and still the lead the converged release has over Martin & Moyce's 1.44 (at least
 // 0.08; measured 0.12 and 0.21).
