@@ -73,18 +73,23 @@ double interpolate_fluid_linear(const SphContext& ctx, const NeighborGrid& grid,
     beta = ldlt.solve(Eigen::Vector4d(1.0, 0.0, 0.0, 0.0));
     linear = beta.allFinite();
   }
-  const auto linear_weight = [&](std::uint32_t f, double w) {
-    double q_dot_beta = beta[0];
-    for (int a = 0; a < ctx.dim; ++a) q_dot_beta += (p.position[a][f] - m[a]) * scale * beta[a + 1];
-    return w * q_dot_beta;
-  };
+  // The linear weights, computed once: summed for the bound, then handed out.
+  thread_local std::vector<double> fitted;
+  fitted.clear();
   if (linear) {
     double amplification = 0.0;
-    for (const auto& [f, w] : near) amplification += std::abs(linear_weight(f, w));
+    for (const auto& [f, w] : near) {
+      double q_dot_beta = beta[0];
+      for (int a = 0; a < ctx.dim; ++a)
+        q_dot_beta += (p.position[a][f] - m[a]) * scale * beta[a + 1];
+      fitted.push_back(w * q_dot_beta);
+      amplification += std::abs(fitted.back());
+    }
     linear = amplification <= kMaxLinearAmplification;
   }
   const double shepard = 1.0 / A(0, 0);
-  for (const auto& [f, w] : near) visit(f, linear ? linear_weight(f, w) : w * shepard);
+  for (std::size_t k = 0; k < near.size(); ++k)
+    visit(near[k].first, linear ? fitted[k] : near[k].second * shepard);
   return fraction;
 }
 

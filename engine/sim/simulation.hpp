@@ -154,8 +154,9 @@ class Simulation {
 
  private:
   TimeStepChoice choose_time_step(double until) const;
-  // Kinetic plus potential energy of the fluid and the dynamic bodies.
+  // The Courant number dt U / h of a step at the flow's speed scale (surface smoothing's rate).
   double step_courant(double dt) const;
+  // Kinetic plus potential energy of the fluid and the dynamic bodies.
   double mechanical_energy() const;
   void check_energy(StepReport& report);
   void check_health(StepReport& report);
