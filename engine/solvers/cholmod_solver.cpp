@@ -1,4 +1,4 @@
-// Direct sparse Cholesky factorisation with SuiteSparse CHOLMOD (supernodal, AMD ordering).
+// Direct sparse Cholesky factorisation with SuiteSparse CHOLMOD (simplicial LDL', AMD ordering).
 // The sparsity changes every step as neighbours change, so each solve analyses and factorises;
 // the factor is kept for further right-hand sides (solve_again).
 #include <cholmod.h>
@@ -18,6 +18,12 @@ class CholmodSolver final : public LinearSolver {
   CholmodSolver() {
     cholmod_l_start(&common_);
     common_.print = 0;
+    // Simplicial, not supernodal: on the 2D pressure systems (up to 60,000 unknowns) the
+    // supernodal factor's dense blocks are small, so it gains nothing from the BLAS, and its
+    // OpenMP loops (4 threads, fixed at CHOLMOD's build) fight the run's own: 1.4x slower with
+    // Debian's reference BLAS and 2.7x slower on two threads with OpenBLAS-OpenMP
+    // (docs/performance.md, thirteenth session).
+    common_.supernodal = CHOLMOD_SIMPLICIAL;
   }
   ~CholmodSolver() override {
     release();
