@@ -85,13 +85,17 @@ BodySummary summarize_body(const BodyTrack& track, const Vec3& gravity,
 
   std::vector<double> magnitude(n);
   for (std::size_t k = 0; k < n; ++k) magnitude[k] = row3(track.force_fluid, k).norm();
-  // A one-step spike stands above spike_weights W and above spike_ratio times both neighbours.
+  // A one-step spike stands above spike_weights W, and each neighbouring step's load is either
+  // smaller by spike_ratio or points the other way (a load that reverses every step).
   const auto spike = [&](std::size_t k) {
     if (!(settings.spike_weights > 0) || !(magnitude[k] > settings.spike_weights * s.weight))
       return false;
-    const double before = k > 0 ? magnitude[k - 1] : 0.0;
-    const double after = k + 1 < n ? magnitude[k + 1] : 0.0;
-    return magnitude[k] > settings.spike_ratio * std::max(before, after);
+    const Vec3 f = row3(track.force_fluid, k);
+    const auto stands_apart_from = [&](std::size_t j) {
+      return f.dot(row3(track.force_fluid, j)) < 0.0 ||
+             settings.spike_ratio * magnitude[j] < magnitude[k];
+    };
+    return (k == 0 || stands_apart_from(k - 1)) && (k + 1 == n || stands_apart_from(k + 1));
   };
 
   bool carried = false;

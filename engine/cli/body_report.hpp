@@ -34,9 +34,11 @@ struct BodyReportSettings {
   double carried_fraction = 0.5;    // the support carried the body: upward contact >= 0.5 W
   double released_fraction = 0.01;  // ... and no longer: |vertical contact| < 0.01 W
   double release_hold = 0.05;       // s the contact must stay released to count as leaving
-  // A load spike: a fluid force above spike_weights W that stands alone, more than spike_ratio
-  // times the force of both neighbouring steps (the water under a landing body stopped in one
-  // step: its size grows as 1/dt, docs/stability.md). It is counted and left out of the peaks.
+  // A load spike: a fluid force above spike_weights W that stands alone: each neighbouring
+  // step's force is smaller by more than spike_ratio (the water under a landing body stopped in
+  // one step: its size grows as 1/dt) or points the other way (a load reversing every step, as
+  // under a landed girder sliding on the floor; docs/stability.md). It is counted and left out of
+  // the peaks.
   double spike_weights = 10.0;  // 0: every load counts in the peaks
   double spike_ratio = 2.0;
   // The window of the windowed peaks (engine/cli/landing_load.hpp): 10 fluid steps at the

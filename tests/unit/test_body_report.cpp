@@ -121,6 +121,23 @@ TEST(BodyReport, OneStepSpikesAreFlaggedNotKeptInThePeaks) {
   EXPECT_NEAR(s.peak_force_vertical, 500.0, 1e-9);
 }
 
+// A load reversing every step (the landed girder sliding on the floor, docs/stability.md), each
+// step above 10 W, is eight spikes, not a peak; a load that keeps its direction is not.
+TEST(BodyReport, ALoadReversingEveryStepIsFlaggedStepByStep) {
+  cli::BodyTrack t = synthetic_track();
+  for (int k = 1000; k < 1008; ++k) t.force_fluid[3 * k] = k % 2 == 0 ? 300.0 : -300.0;  // 15 W
+  cli::BodySummary s = cli::summarize_body(t, kGravity);
+  std::printf("%s\n", cli::format_body_summary(t, s).c_str());
+  EXPECT_EQ(s.load_spikes, 8);
+  EXPECT_NEAR(s.largest_spike, 300.0, 1e-9);
+  EXPECT_NEAR(s.peak_force_horizontal, -60.0, 1e-9);  // the pulse at 1.5 s, as without them
+  EXPECT_NEAR(std::abs(s.peak_force_horizontal_one_step), 300.0, 1e-9);  // shown, not kept
+  for (int k = 1000; k < 1008; ++k) t.force_fluid[3 * k] = k % 2 == 0 ? 300.0 : 250.0;
+  s = cli::summarize_body(t, kGravity);
+  EXPECT_EQ(s.load_spikes, 0);
+  EXPECT_NEAR(s.peak_force_horizontal, 300.0, 1e-9);
+}
+
 TEST(BodyReport, ABodyNeverReachedNorReleasedHasNoTimes) {
   cli::BodyTrack track = synthetic_track();
   for (auto& f : track.force_fluid) f = 0.0;
