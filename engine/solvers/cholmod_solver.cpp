@@ -19,11 +19,13 @@ class CholmodSolver final : public LinearSolver {
     cholmod_l_start(&common_);
     common_.print = 0;
     // Simplicial, not supernodal: on the 2D pressure systems (up to 60,000 unknowns) the
-    // supernodal factor's dense blocks are small, so it gains nothing from the BLAS, and its
-    // OpenMP loops (4 threads, fixed at CHOLMOD's build) fight the run's own: 1.4x slower with
-    // Debian's reference BLAS and 2.7x slower on two threads with OpenBLAS-OpenMP
-    // (docs/performance.md, thirteenth session).
+    // supernodal factor's dense blocks are small, so it gains nothing from the BLAS, and its own
+    // OpenMP loops fight the run's: it was 1.3x (one thread) to 1.75x (two) slower with Debian's
+    // reference BLAS, 2.2x on two threads with OpenBLAS-OpenMP (docs/performance.md, thirteenth
+    // session). LL', not LDL': a simplicial LDL' takes an indefinite matrix without a word, LL'
+    // stops at its first non-positive pivot (the check in solve()).
     common_.supernodal = CHOLMOD_SIMPLICIAL;
+    common_.final_ll = 1;
   }
   ~CholmodSolver() override {
     release();

@@ -147,6 +147,22 @@ TEST(PressureSolvers, ClearErrors) {
   } catch (const SolverError& e) {
     EXPECT_NE(std::string(e.what()).find("multigrid"), std::string::npos);
   }
+  // An indefinite matrix is refused by the direct solver, not factorised as LDL' in silence.
+  {
+    CsrMatrix B;
+    B.rows = 2;
+    B.row_start = {0, 2, 4};
+    B.column = {0, 1, 0, 1};
+    B.value = {1.0, 2.0, 2.0, 1.0};  // eigenvalues 3 and -1
+    auto cholmod = make_solver("cholmod", 1e-8, 100);
+    std::vector<double> y(2, 0.0);
+    try {
+      cholmod->solve(B, {1.0, 1.0}, y);
+      FAIL() << "an indefinite matrix was factorised";
+    } catch (const SolverError& e) {
+      EXPECT_NE(std::string(e.what()).find("not positive definite"), std::string::npos) << e.what();
+    }
+  }
   // A row without its diagonal entry cannot be handed to BoomerAMG.
   CsrMatrix A = laplacian_3d(3);
   for (std::int64_t k = A.row_start[4]; k < A.row_start[5]; ++k)
