@@ -1,4 +1,4 @@
-// Direct sparse Cholesky factorisation with SuiteSparse CHOLMOD (simplicial LDL', AMD ordering).
+// Direct sparse Cholesky factorisation with SuiteSparse CHOLMOD (simplicial LL', AMD ordering).
 // The sparsity changes every step as neighbours change, so each solve analyses and factorises;
 // the factor is kept for further right-hand sides (solve_again).
 #include <cholmod.h>
