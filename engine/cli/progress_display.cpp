@@ -89,7 +89,10 @@ void print_summary(std::FILE* out, const Simulation& sim, const RunSummary& s) {
                sim.params().solver.c_str());
   std::fprintf(out, "  fluid particles found inside walls: %ld\n", s.wall_crossings);
   if (s.gap_relocations > 0)
-    std::fprintf(out, "  of those, moved out of a closing gap: %ld\n", s.gap_relocations);
+    std::fprintf(out,
+                 "  of those, moved to a free place (out of a closing gap, or off another "
+                 "particle): %ld\n",
+                 s.gap_relocations);
   if (s.retired_particles > 0)
     std::fprintf(out,
                  "  fluid particles retired as they left the domain: %zu (%.2g %% of the fluid; "

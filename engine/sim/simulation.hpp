@@ -67,8 +67,9 @@ struct RunSummary {
   // Boundary (wall, gate, body) particles within a fluid particle's support, the only ones the
   // step's marker, assembly and corrector work touches; a mean over the steps.
   double mean_active_boundary = 0.0;
-  long wall_crossings = 0;            // fluid particles found inside a wall, summed over steps
-  long gap_relocations = 0;           // of those, moved out of a closing gap (free_spot.hpp)
+  long wall_crossings = 0;   // fluid particles found inside a wall, summed over steps
+  long gap_relocations = 0;  // of those, moved to a free place: out of a closing gap, or put
+                             // back onto another particle (free_spot.hpp)
   std::size_t retired_particles = 0;  // fluid that left the domain and was retired
   std::string first_retirement;       // the first of them: which, where, when
   std::string output_path;            // where an observer keeps the run (RunObserver::kept_in)
@@ -178,8 +179,11 @@ class Simulation {
   const MovingWall* motion_of_wall(std::size_t w) const;
   // Signed distance of x from the nearest wall or body (negative inside one).
   double distance_to_solids(const Vec3& x) const;
-  // Moves fluid particle i, caught in a closing gap, to the nearest free place (free_spot.hpp).
-  void move_out_of_gap(std::size_t i);
+  // Moves fluid particle i, caught in a closing gap or put back onto another particle, to the
+  // nearest free place (free_spot.hpp).
+  void move_to_free_place(std::size_t i);
+  // Whether fluid particle i lies within d0/2 of another fluid particle (push_out stage).
+  bool crowded(std::size_t i) const;
   void evaluate_probes();
   std::uint64_t compute_layout_fingerprint() const;
 
@@ -199,7 +203,8 @@ class Simulation {
   std::unique_ptr<RigidBodySystem> bodies_;
   std::vector<std::uint8_t> active_boundary_;
   std::vector<std::uint8_t> inside_wall_;
-  std::vector<std::uint8_t> trapped_;  // fluid caught in a closing gap this step
+  std::vector<std::uint8_t> trapped_;     // fluid to move to a free place this step
+  std::vector<std::uint32_t> relocated_;  // of those, the ones moved out so far this step
   std::vector<double> shift_scratch_;
   StageTimer timer_;
   // The step composed from the scene (step_plan.hpp) and the modes it runs in.

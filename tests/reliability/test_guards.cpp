@@ -4,6 +4,8 @@
 #include <gtest/gtest.h>
 
 #include <algorithm>
+#include <cmath>
+#include <cstdio>
 #include <filesystem>
 #include <string>
 
@@ -166,8 +168,9 @@ TEST(Guards, WallCrossingsStopTheRun) {
   EXPECT_NE(f.result.output.find("more than wall_crossing_limit = 0.02 of the 200 fluid particles"),
             std::string::npos)
       << f.result.output;
-  // With the guard off the 20 are pushed out, and the step after the energy guard fires: the
-  // crossing guard names the cause one step earlier.
+  // With the guard off the 20 are pushed out (those put back onto another particle move on to
+  // a free place), and a few steps later the energy guard fires (step 24 since that move; 22
+  // before it): the crossing guard names the cause earlier.
   const fs::path off = dir / "off";
   const auto unguarded = test::run_washout(
       {"run", std::string(WASHOUT_SOURCE_DIR) + "/tests/data/wall_jump.lua", "--out", off.string(),
@@ -175,9 +178,48 @@ TEST(Guards, WallCrossingsStopTheRun) {
       (dir / "log_off.txt").string(), 120.0);
   EXPECT_EQ(unguarded.status, 2) << unguarded.output;
   EXPECT_EQ(unguarded.output.find("wall crossings: "), std::string::npos);
-  EXPECT_NE(unguarded.output.find("(step 22): energy gain"), std::string::npos) << unguarded.output;
+  const std::size_t energy = unguarded.output.find("): energy gain");
+  ASSERT_NE(energy, std::string::npos) << unguarded.output;
+  const std::size_t step = unguarded.output.rfind("(step ", energy);
+  ASSERT_NE(step, std::string::npos) << unguarded.output;
+  EXPECT_GT(std::stol(unguarded.output.substr(step + 6, energy - step - 6)), 21)
+      << unguarded.output;
   EXPECT_NE(f.result.output.find("(step 21): wall crossings: 20 fluid particles"),
             std::string::npos);
+}
+
+// The same jump with the crossing guard off, seen frame by frame: the 20 particles inside the
+// plate are put back d0/2 outside its face, onto the column's last row (before the fix, exactly
+// onto those particles: separation 0, and the energy guard fired two steps later); each one put
+// back onto another particle moves on to a free place instead, so that after the jump no two
+// fluid particles are closer than d0/2 and the run goes on.
+TEST(Guards, ParticlesPutBackOutOfAWallDoNotLandOnEachOther) {
+  const fs::path dir = fs::path(testing::TempDir()) / "guard_put_back";
+  fs::remove_all(dir);
+  fs::create_directories(dir);
+  const auto result = test::run_washout(
+      {"run", std::string(WASHOUT_SOURCE_DIR) + "/tests/data/wall_jump.lua", "--out", dir.string(),
+       "--quiet", "--threads", "1", "--set", "wall_crossing_limit=0", "--set", "end_time=0.022",
+       "--set", "output_interval=0.001"},
+      (dir / "log.txt").string(), 120.0);
+  ASSERT_EQ(result.status, 0) << result.output;
+  EXPECT_NE(result.output.find("moved to a free place"), std::string::npos) << result.output;
+  io::RunFileReader file((dir / "wall_jump.h5").string());
+  const double d0 = file.d0();
+  for (std::size_t f = file.frame_count() - 3; f < file.frame_count(); ++f) {
+    const auto frame = file.read_frame(f);
+    double closest2 = 1e300;
+    for (std::size_t i = 0; i < frame.kind.size(); ++i)
+      for (std::size_t j = i + 1; j < frame.kind.size(); ++j) {
+        if (frame.kind[i] != 0 || frame.kind[j] != 0) continue;
+        const double dx = frame.position[2 * i] - frame.position[2 * j];
+        const double dy = frame.position[2 * i + 1] - frame.position[2 * j + 1];
+        closest2 = std::min(closest2, dx * dx + dy * dy);
+      }
+    std::printf("frame %zu (t = %.3f s): closest fluid particles %.4f m apart (d0 = %g m)\n", f,
+                file.frame_times()[f], std::sqrt(closest2), d0);
+    EXPECT_GE(std::sqrt(closest2), 0.5 * d0);
+  }
 }
 
 }  // namespace
