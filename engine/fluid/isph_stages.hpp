@@ -47,10 +47,13 @@ struct PpeStatistics {
 // (ghost_surface: at d0/2 beyond the surface particles; otherwise on them), walls by the Neumann
 // condition through virtual pressures P_w = P_i + g_iw.
 // walls: what the scene fixes for its walls (none: a fluid without boundary particles).
+// symmetric_gradient: the corrector takes the symmetric form inside the fluid (GradientForms),
+// whose zero-order term the matrix then holds (ppe_matrix.cpp).
 PpeStatistics assemble_pressure_poisson(const SphContext& ctx, const NeighborList& list,
                                         const Particles& p, const Vec3& gravity, double alpha,
                                         double dt, bool ghost_surface, FluidWork& work,
-                                        const WallConditions& walls = WallConditions::none());
+                                        const WallConditions& walls = WallConditions::none(),
+                                        bool symmetric_gradient = false);
 // Copies the solution back to the fluid particles' pressure (P = 0 on the free surface).
 void scatter_pressure(const FluidWork& work, Particles& p);
 // Initial guess for an iterative solve: the previous pressure of each unknown.

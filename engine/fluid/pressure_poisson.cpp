@@ -46,10 +46,10 @@ std::size_t number_pressure_unknowns(const Particles& p, bool ghost_surface, Flu
 PpeStatistics assemble_pressure_poisson(const SphContext& ctx, const NeighborList& list,
                                         const Particles& p, const Vec3& gravity, double alpha,
                                         double dt, bool ghost_surface, FluidWork& work,
-                                        const WallConditions& walls) {
+                                        const WallConditions& walls, bool symmetric_gradient) {
   work.matrix.rows = number_pressure_unknowns(p, ghost_surface, work);
   PpeRowFlags flags;
-  assemble_ppe_matrix(ctx, list, p, ghost_surface, work, flags);
+  assemble_ppe_matrix(ctx, list, p, ghost_surface, symmetric_gradient, work, flags);
   add_known_pressures(ctx, list, p, walls, gravity, dt, work);
   subtract_ppe_source(ctx, list, p, walls, gravity, alpha, dt, flags, work);
   PpeStatistics stats;

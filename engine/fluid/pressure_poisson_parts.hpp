@@ -27,9 +27,11 @@ std::size_t number_pressure_unknowns(const Particles& p, bool ghost_surface, Flu
 
 // The matrix: row pattern and laplacian coefficients, -c_ij off the diagonal and sum_j c_ij over
 // the fluid neighbours on it (a boundary neighbour's P_w - P_i is known: add_known_pressures),
-// plus the ghost surface's 2 |m_i| / d0 (ppe_matrix.cpp). Fills the row flags.
+// plus the ghost surface's 2 |m_i| / d0 and, where the corrector's gradient is the symmetric
+// form, its zero-order term's 2 |S_i|^2 (ppe_matrix.cpp). Fills the row flags.
 void assemble_ppe_matrix(const SphContext& ctx, const NeighborList& list, const Particles& p,
-                         bool ghost_surface, FluidWork& work, PpeRowFlags& flags);
+                         bool ghost_surface, bool symmetric_gradient, FluidWork& work,
+                         PpeRowFlags& flags);
 
 // Known pressures on the right-hand side: a boundary neighbour's virtual pressure P_w = P_i +
 // g_iw (the Neumann wall condition) gives c_iw g_iw, a squeeze-film neighbour c_ij P_film

@@ -281,7 +281,7 @@ void Simulation::run_stage(Stage stage, StepInProgress& now) {
       return;
     case Stage::ppe_assembly:
       now.ppe = assemble_pressure_poisson(ctx_, neighbors_, particles_, prm.gravity, prm.alpha, dt,
-                                          ghost_surface_, work_, walls_);
+                                          ghost_surface_, work_, walls_, gradient_forms_.symmetric);
       return;
     case Stage::ppe_solve:
       solve_pressure(now);

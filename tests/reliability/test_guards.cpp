@@ -56,11 +56,12 @@ void expect_fired(const Fired& f, const std::string& fragment) {
   EXPECT_EQ(limit.size(), energy.size());
 }
 
-// alpha = 1 at a quarter of the default time step: the density-invariance term, scaled by
-// 1/dt^2, overshoots and the fluid gains energy (docs/stability.md, the (dt, alpha) map). The
+// alpha = 1 at a twentieth of the default time step: the density-invariance term, scaled by
+// 1/dt^2, overshoots and the fluid gains energy (docs/stability.md, the (dt, alpha) map; at a
+// quarter of it the run is stable since the PPE holds the symmetric gradient's own term). The
 // energy guard fires before any particle reaches the speed limit.
 TEST(Guards, EnergyGainStopsTheRun) {
-  const Fired f = run_dam_break("energy", {"end_time=0.27", "dt_max=0.01", "cfl=0.05", "alpha=1"});
+  const Fired f = run_dam_break("energy", {"end_time=0.27", "dt_max=0.01", "cfl=0.01", "alpha=1"});
   expect_fired(f, "energy gain: the mechanical energy of the fluid and bodies is");
   const auto energy = io::RunFileReader(f.file.string()).read_doubles("/stats/mechanical_energy");
   // Before the blow-up the dam break only loses energy: its largest value is the start's, to
@@ -168,22 +169,17 @@ TEST(Guards, WallCrossingsStopTheRun) {
   EXPECT_NE(f.result.output.find("more than wall_crossing_limit = 0.02 of the 200 fluid particles"),
             std::string::npos)
       << f.result.output;
-  // With the guard off the 20 are pushed out (those put back onto another particle move on to
-  // a free place), and a few steps later the energy guard fires (step 24 since that move; 22
-  // before it): the crossing guard names the cause earlier.
+  // With the guard off the 20 are pushed out, those put back onto another particle moving on
+  // to a free place, and the run goes on (before the fourteenth session the energy guard fired a
+  // step later): the guard is what stops such a step, and it names the cause.
   const fs::path off = dir / "off";
   const auto unguarded = test::run_washout(
       {"run", std::string(WASHOUT_SOURCE_DIR) + "/tests/data/wall_jump.lua", "--out", off.string(),
        "--quiet", "--threads", "1", "--set", "wall_crossing_limit=0"},
       (dir / "log_off.txt").string(), 120.0);
-  EXPECT_EQ(unguarded.status, 2) << unguarded.output;
+  EXPECT_EQ(unguarded.status, 0) << unguarded.output;
   EXPECT_EQ(unguarded.output.find("wall crossings: "), std::string::npos);
-  const std::size_t energy = unguarded.output.find("): energy gain");
-  ASSERT_NE(energy, std::string::npos) << unguarded.output;
-  const std::size_t step = unguarded.output.rfind("(step ", energy);
-  ASSERT_NE(step, std::string::npos) << unguarded.output;
-  EXPECT_GT(std::stol(unguarded.output.substr(step + 6, energy - step - 6)), 21)
-      << unguarded.output;
+  EXPECT_NE(unguarded.output.find("moved to a free place"), std::string::npos) << unguarded.output;
   EXPECT_NE(f.result.output.find("(step 21): wall crossings: 20 fluid particles"),
             std::string::npos);
 }
