@@ -182,8 +182,14 @@ class Simulation {
   // Moves fluid particle i, caught in a closing gap or put back onto another particle, to the
   // nearest free place (free_spot.hpp).
   void move_to_free_place(std::size_t i);
-  // Whether fluid particle i lies within d0/2 of another fluid particle (push_out stage).
-  bool crowded(std::size_t i) const;
+  // Whether a particle other than i, fluid only or any, lies within d0/2 of y (push_out stage).
+  bool crowded(const Vec3& y, std::size_t i, bool fluid_only) const;
+  // Calls visit(x) with the position of every particle near y but i, in the grid of the start
+  // of the step, skipping the fluid caught this step; those moved so far count at their new
+  // places (relocated_). fluid_only leaves the boundary particles out.
+  template <class Visit>
+  void for_each_settled_particle_near(const Vec3& y, std::size_t i, bool fluid_only,
+                                      Visit&& visit) const;
   void evaluate_probes();
   std::uint64_t compute_layout_fingerprint() const;
 

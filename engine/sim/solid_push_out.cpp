@@ -22,7 +22,37 @@ double squared_separation(const SphContext& ctx, const Vec3& a, const Vec3& b) {
   return d[0] * d[0] + d[1] * d[1] + d[2] * d[2];
 }
 
+constexpr double kHoleRadius = 0.5;  // [d0]: a particle closer than this is on top of another
+
 }  // namespace
+
+// The particles caught this step are skipped where the grid lists them: those still to move
+// sit inside a solid, and those already moved are no longer where the grid (built at the start
+// of the step) has them. The moved ones count at their new places, from relocated_: without
+// them, the water under a landing girder (five particles) was put into one spot behind it at
+// twice the water's density, and the pressure there alternated in sign each step, growing
+// until a particle ran away (2D wash-out, 0.30 m column, d0 = 0.01 m, t = 1.41 s).
+template <class Visit>
+void Simulation::for_each_settled_particle_near(const Vec3& y, std::size_t i, bool fluid_only,
+                                                Visit&& visit) const {
+  const double point[3] = {y[0], y[1], y[2]};
+  const auto fluid = static_cast<std::uint32_t>(particles_.fluid_count);
+  const auto limit = fluid_only ? fluid : static_cast<std::uint32_t>(particles_.size());
+  grid_.for_each_candidate_below(point, limit, [&](std::uint32_t j) {
+    if (j == i || (j < fluid && trapped_[j])) return;
+    visit(particles_.x(j));
+  });
+  for (const std::uint32_t j : relocated_) visit(particles_.x(j));
+}
+
+bool Simulation::crowded(const Vec3& y, std::size_t i, bool fluid_only) const {
+  const double limit2 = kHoleRadius * kHoleRadius * ctx_.d0 * ctx_.d0;
+  bool near = false;
+  for_each_settled_particle_near(y, i, fluid_only, [&](const Vec3& x) {
+    near = near || squared_separation(ctx_, y, x) < limit2;
+  });
+  return near;
+}
 
 void Simulation::push_out_of_solids(StepReport& report) {
   const std::size_t n = particles_.fluid_count;
@@ -87,7 +117,7 @@ void Simulation::push_out_of_solids(StepReport& report) {
   // outside it, some closer than a fifth of a spacing to each other, and the pressure that
   // pulls them apart alternates in sign each step. Such a particle moves on to a free place.
   for (std::size_t i = 0; i < n; ++i)
-    if (inside_wall_[i] && !trapped_[i] && crowded(i)) {
+    if (inside_wall_[i] && !trapped_[i] && crowded(particles_.x(i), i, /*fluid_only=*/true)) {
       trapped_[i] = 1;
       move_to_free_place(i);
     }
@@ -126,40 +156,10 @@ double Simulation::distance_to_solids(const Vec3& x) const {
   return distance;
 }
 
-bool Simulation::crowded(std::size_t i) const {
-  const double point[3] = {particles_.position[0][i], particles_.position[1][i],
-                           particles_.position[2][i]};
-  const double limit2 = 0.25 * ctx_.d0 * ctx_.d0;
-  bool near = false;
-  const auto fluid = static_cast<std::uint32_t>(particles_.fluid_count);
-  grid_.for_each_candidate_below(point, fluid, [&](std::uint32_t j) {
-    if (near || j == i || trapped_[j]) return;
-    near = squared_separation(ctx_, particles_.x(j), particles_.x(i)) < limit2;
-  });
-  for (const std::uint32_t j : relocated_)
-    near = near || squared_separation(ctx_, particles_.x(j), particles_.x(i)) < limit2;
-  return near;
-}
-
 void Simulation::move_to_free_place(std::size_t i) {
   const int dim = particles_.dim;
   const double d0 = ctx_.d0;
-  const auto all = static_cast<std::uint32_t>(particles_.size());
   const double r2max = 4.0 * ctx_.h * ctx_.h;
-  // The particles caught this step are skipped where the grid lists them: those still to move
-  // sit inside a solid, and those already moved are no longer where the grid (built at the start
-  // of the step) has them. The moved ones count at their new places, from relocated_: without
-  // them, the water under a landing girder (five particles) was put into one spot behind it at
-  // twice the water's density, and the pressure there alternated in sign each step, growing
-  // until a particle ran away (2D wash-out, 0.30 m column, d0 = 0.01 m, t = 1.41 s).
-  const auto for_each_particle_near = [&](const Vec3& y, auto&& visit) {
-    const double point[3] = {y[0], y[1], y[2]};
-    grid_.for_each_candidate_below(point, all, [&](std::uint32_t j) {
-      if (j == i || (j < particles_.fluid_count && trapped_[j])) return;
-      visit(particles_.x(j));
-    });
-    for (const std::uint32_t j : relocated_) visit(particles_.x(j));
-  };
   // A free place must also have fluid within the kernel support: the far side of a wall (as
   // thick as the support) is clear of solids too, but out of the fluid's reach.
   auto clear_of_solids = [&](const Vec3& y) {
@@ -172,12 +172,7 @@ void Simulation::move_to_free_place(std::size_t i) {
   };
   // A hole in the fluid: no particle within d0/2 of y.
   auto clear_of_fluid = [&](const Vec3& y) {
-    if (!clear_of_solids(y)) return false;
-    bool crowded = false;
-    for_each_particle_near(y, [&](const Vec3& x) {
-      crowded = crowded || squared_separation(ctx_, y, x) < 0.25 * d0 * d0;
-    });
-    return !crowded;
+    return clear_of_solids(y) && !crowded(y, i, /*fluid_only=*/false);
   };
   // Best, a hole with room for it: the kernel-weighted volume of the fluid and the walls there,
   // its own W(0) included, at most that of a full lattice (by the free surface, as a rule), so
@@ -188,7 +183,7 @@ void Simulation::move_to_free_place(std::size_t i) {
   auto with_room = [&](const Vec3& y) {
     if (!clear_of_fluid(y)) return false;
     double occupied = 0.0;
-    for_each_particle_near(y, [&](const Vec3& x) {
+    for_each_settled_particle_near(y, i, /*fluid_only=*/false, [&](const Vec3& x) {
       const double r2 = squared_separation(ctx_, y, x);
       if (r2 < r2max) occupied += ctx_.volume * ctx_.kernel.value(std::sqrt(r2));
     });
