@@ -58,9 +58,11 @@ void assemble_ppe_matrix(const SphContext& ctx, const NeighborList& list, const 
     double diagonal = 0.0;
     double missing[3] = {0, 0, 0};  // m_i
     double cut[3] = {0, 0, 0};      // S_i
+    // The rows the corrector takes in symmetric form: all but the surface's (corrector.cpp).
+    const bool own_term = symmetric_gradient && !work.free_surface[i];
     for_each_neighbor(ctx, list, p, i, [&](const NeighborPair& q) {
       const double c = -ctx.laplacian_weight(q.r, q.r2);  // c_ij >= 0
-      const double g = ctx.gradient_weight(q.r);
+      const double g = own_term ? ctx.gradient_weight(q.r) : 0.0;
       for (int a = 0; a < ctx.dim; ++a) {
         missing[a] += c * q.d[a];  // -c (x_j - x_i)
         cut[a] += g * q.d[a];
@@ -77,9 +79,7 @@ void assemble_ppe_matrix(const SphContext& ctx, const NeighborList& list, const 
       for (int a = 0; a < ctx.dim; ++a) m2 += missing[a] * missing[a];
       diagonal += 2.0 * std::sqrt(m2) / ctx.d0;
     }
-    // The rows the corrector takes in symmetric form: all but the surface's (corrector.cpp).
-    if (symmetric_gradient && !work.free_surface[i])
-      diagonal += 2.0 * (cut[0] * cut[0] + cut[1] * cut[1] + cut[2] * cut[2]);
+    if (own_term) diagonal += 2.0 * (cut[0] * cut[0] + cut[1] * cut[1] + cut[2] * cut[2]);
     A.column[A.row_start[row]] = row;
     A.value[A.row_start[row]] = diagonal;
   }
