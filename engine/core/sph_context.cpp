@@ -32,4 +32,18 @@ SphContext::SphContext(int dim_, double d0_, double h_over_d0, double rho0_,
   laplacian_correction = dim / laplacian_sum;
 }
 
+void SphContext::use_wendland_symmetric_gradient() {
+  symmetric_shape = WendlandShape(2.0 * d0);
+  // The lattice normalisation, as for the cubic spline: sum_j V (-r . grad K) = dim.
+  const int reach = 2;
+  double sum = 0.0;
+  for (int k = (dim == 3 ? -reach : 0); k <= (dim == 3 ? reach : 0); ++k)
+    for (int j = -reach; j <= reach; ++j)
+      for (int i = -reach; i <= reach; ++i) {
+        const double r = d0 * std::sqrt(double(i * i + j * j + k * k));
+        if (r > 0.0) sum -= volume * symmetric_shape.derivative_over_r(r) * r * r;
+      }
+  symmetric_correction = dim / sum;
+}
+
 }  // namespace washout

@@ -6,6 +6,7 @@
 #include "engine/core/cubic_spline_kernel.hpp"
 #include "engine/core/particles.hpp"
 #include "engine/core/periodic_box.hpp"
+#include "engine/core/wendland_kernel.hpp"
 
 namespace washout {
 
@@ -25,8 +26,15 @@ struct SphContext {
   int full_support_neighbours = 0;    // lattice points within 2h, i excluded (20 in 2D, 56 in 3D)
   double gradient_correction = 1.0;
   double laplacian_correction = 1.0;
+  // The symmetric pressure gradient's pair force: the cubic spline (symmetric_shape support 0)
+  // or a Wendland C2 shape of support 2 d0, with its own lattice normalisation.
+  WendlandShape symmetric_shape{0.0};
+  double symmetric_correction = 1.0;
 
   SphContext(int dim, double d0, double h_over_d0, double rho0, const PeriodicBox& periodic);
+
+  // Makes the symmetric gradient's pair force the Wendland C2 shape of support 2 d0.
+  void use_wendland_symmetric_gradient();
 
   // x_i - x_j with the periodic minimum image.
   void displacement(const Particles& p, std::size_t i, std::size_t j, double d[3]) const {
@@ -40,6 +48,15 @@ struct SphContext {
   // every gradient and divergence (sph_operators.hpp).
   double gradient_weight(double r) const {
     return gradient_correction * volume * kernel.derivative_over_r(r);
+  }
+
+  // V grad K_ij = symmetric_gradient_weight(r) r_ij for the symmetric pressure gradient (and its
+  // own term in the PPE's diagonal); the cubic spline's gradient_weight unless
+  // use_wendland_symmetric_gradient() was called.
+  double symmetric_gradient_weight(double r) const {
+    if (symmetric_shape.support() > 0.0)
+      return symmetric_correction * volume * symmetric_shape.derivative_over_r(r);
+    return gradient_weight(r);
   }
 
   // The laplacian's pair weight 2 V (r . grad W) / (r^2 + eta^2) (METHOD.md, with r . grad W =

@@ -61,7 +61,7 @@ inline void symmetric_gradient(const SphContext& ctx, const NeighborList& list, 
                                std::size_t i, double f_i, Value&& value, double grad[3]) {
   grad[0] = grad[1] = grad[2] = 0.0;
   for_each_neighbor(ctx, list, p, i, [&](const NeighborPair& q) {
-    const double f = ctx.gradient_weight(q.r) * (value(q) + f_i);
+    const double f = ctx.symmetric_gradient_weight(q.r) * (value(q) + f_i);
     for (int a = 0; a < ctx.dim; ++a) grad[a] += f * q.d[a];
   });
 }

@@ -12,11 +12,15 @@
 // by a face moving away from it) and the density still counts the particle as inside. The
 // laplacian stands for the difference form; the zero-order term moves particle i by
 // -(dt/rho0) 2 P_i S_i and changes its own divergence by (dt/rho0) 2 |S_i|^2 P_i, so a row the
-// symmetric gradient will correct gains 2 |S_i|^2 on its diagonal. Without it the projection
-// overshoots there and the next step answers with a pressure of the other sign: in the 2D
-// wash-out at d0 = 0.005 m the water beside the girder alternated between -0.5 and +0.6 MPa
-// step to step, growing, with the body held still as with it free (docs/method.md, the
-// fourteenth session).
+// symmetric gradient will correct gains 2 |S_i|^2 on its diagonal (2 S_i . S_i^K where the
+// symmetric gradient's pair force has its own kernel K, symmetric_kernel = "wendland": the
+// corrector moves the particle along S_i^K, the divergence sees it through S_i). Without it the
+// projection overshoots there and the next step answers with a pressure of the other sign: in the
+// 2D wash-out at d0 = 0.005 m the water beside the girder alternated between -0.5 and +0.6 MPa step
+// to step, growing, with the body held still as with it free (docs/method.md, the fourteenth
+// session).
+#include <algorithm>
+
 #include "engine/core/sph_operators.hpp"
 #include "engine/fluid/pressure_poisson_parts.hpp"
 
@@ -56,16 +60,19 @@ void assemble_ppe_matrix(const SphContext& ctx, const NeighborList& list, const 
     if (row < 0) continue;
     std::int64_t slot = A.row_start[row] + 1;
     double diagonal = 0.0;
-    double missing[3] = {0, 0, 0};  // m_i
-    double cut[3] = {0, 0, 0};      // S_i
+    double missing[3] = {0, 0, 0};    // m_i
+    double cut[3] = {0, 0, 0};        // S_i
+    double cut_force[3] = {0, 0, 0};  // S_i of the symmetric gradient's own kernel
     // The rows the corrector takes in symmetric form: all but the surface's (corrector.cpp).
     const bool own_term = symmetric_gradient && !work.free_surface[i];
     for_each_neighbor(ctx, list, p, i, [&](const NeighborPair& q) {
       const double c = -ctx.laplacian_weight(q.r, q.r2);  // c_ij >= 0
       const double g = own_term ? ctx.gradient_weight(q.r) : 0.0;
+      const double k = own_term ? ctx.symmetric_gradient_weight(q.r) : 0.0;
       for (int a = 0; a < ctx.dim; ++a) {
         missing[a] += c * q.d[a];  // -c (x_j - x_i)
         cut[a] += g * q.d[a];
+        cut_force[a] += k * q.d[a];
       }
       if (q.j >= n) return;
       diagonal += c;
@@ -79,7 +86,12 @@ void assemble_ppe_matrix(const SphContext& ctx, const NeighborList& list, const 
       for (int a = 0; a < ctx.dim; ++a) m2 += missing[a] * missing[a];
       diagonal += 2.0 * std::sqrt(m2) / ctx.d0;
     }
-    if (own_term) diagonal += 2.0 * (cut[0] * cut[0] + cut[1] * cut[1] + cut[2] * cut[2]);
+    // Never below zero, so that the matrix stays positive definite: S_i . S_i^K can be negative
+    // where both are small (inside an irregular block, 0.5 % of a diagonal at most in
+    // tests/unit/test_pressure_poisson.cpp); where the support is cut they point the same way.
+    if (own_term)
+      diagonal += std::max(
+          0.0, 2.0 * (cut[0] * cut_force[0] + cut[1] * cut_force[1] + cut[2] * cut_force[2]));
     A.column[A.row_start[row]] = row;
     A.value[A.row_start[row]] = diagonal;
   }
