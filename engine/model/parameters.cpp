@@ -114,9 +114,10 @@ const std::vector<ParameterInfo>& ParameterSet::engine_table() {
        d.pressure_gradient},
       {"symmetric_kernel", "-",
        "kernel of the symmetric pressure gradient's pair force: \"cubic\" (the cubic spline, as "
-       "every other operator) or \"wendland\" (Wendland C2 of support 2 d0: a particle lattice "
+       "every other operator), \"wendland\" (Wendland C2 of support 2 d0: a particle lattice "
        "under pressure is stable with it in 2D and 3D, where the cubic spline's 3D lattice "
-       "buckles into columns; docs/method.md, fifteenth session)",
+       "buckles into columns) or \"auto\" (wendland in 3D, cubic in 2D; docs/method.md, "
+       "fifteenth session)",
        d.symmetric_kernel},
       {"surface_gradient", "-",
        "corrector gradient of free-surface particles: \"corrected\" (the difference form with "
@@ -395,7 +396,7 @@ SimulationParameters SimulationParameters::from(const ParameterSet& set) {
   p.coupling_tolerance = positive("coupling_tolerance");
   p.solver_max_iterations = integer("solver_max_iterations", positive("solver_max_iterations"));
   p.pressure_gradient = one_of("pressure_gradient", {"symmetric", "difference"});
-  p.symmetric_kernel = one_of("symmetric_kernel", {"cubic", "wendland"});
+  p.symmetric_kernel = one_of("symmetric_kernel", {"auto", "cubic", "wendland"});
   p.surface_gradient = one_of("surface_gradient", {"corrected", "ghost"});
   p.wall_pressure = one_of("wall_pressure", {"auto", "neumann", "dynamic"});
   p.shifting = non_negative("shifting");

@@ -92,10 +92,11 @@ struct SimulationParameters {
   double coupling_tolerance = 1e-2;  // body coupling's response solves, first pass
   int solver_max_iterations = 5000;
   std::string pressure_gradient = "symmetric";
-  // The symmetric gradient's pair force: "cubic" (METHOD.md's kernel) or "wendland" (Wendland C2
-  // of support 2 d0, whose lattice under pressure is stable in 3D; docs/method.md, fifteenth
-  // session).
-  std::string symmetric_kernel = "cubic";
+  // The symmetric gradient's pair force: "cubic" (METHOD.md's kernel), "wendland" (Wendland C2
+  // of support 2 d0, whose lattice under pressure is stable in 3D) or "auto" (wendland in 3D,
+  // where the cubic spline's lattice buckles; cubic in 2D, where it is neutral and the bodies'
+  // figures are better with it; docs/method.md, fifteenth session).
+  std::string symmetric_kernel = "auto";
   // "ghost" holds the surface without smoothing and floats bodies at their draft, but moves the
   // validated surges (docs/method.md, ninth and twelfth sessions): an option.
   std::string surface_gradient = "corrected";

@@ -56,7 +56,9 @@ Simulation::Simulation(Model model)
     : model_(std::move(model)),
       ctx_(model_.params.dim, model_.params.d0, model_.params.h_over_d0, model_.params.rho0,
            make_periodic_box(model_.params)) {
-  if (model_.params.symmetric_kernel == "wendland") ctx_.use_wendland_symmetric_gradient();
+  if (model_.params.symmetric_kernel == "wendland" ||
+      (model_.params.symmetric_kernel == "auto" && model_.params.dim == 3))
+    ctx_.use_wendland_symmetric_gradient();
   BuiltParticles built = washout::build_particles(model_);
   particles_ = std::move(built.particles);
   moving_walls_ = std::move(built.moving_walls);
