@@ -1,8 +1,8 @@
 #pragma once
 // Wendland C2 kernel shape (Wendland 1995) of support radius R, for the symmetric pressure
-// gradient's pair force where `symmetric_kernel = "wendland"` (docs/method.md, the fifteenth
-// session): with R = 2 d0 a lattice under pressure is stable in 2D and 3D, where the cubic
-// spline's 3D lattice buckles (tests/unit/test_lattice_stability.cpp).
+// gradient's pair force in 3D (`symmetric_kernel = "auto"`, the default, or "wendland";
+// docs/method.md, the fifteenth session): with R = 2 d0 a lattice under pressure is stable in 2D
+// and 3D, where the cubic spline's 3D lattice buckles (tests/unit/test_lattice_stability.cpp).
 //   K(s) = (1 - s)^4 (1 + 4 s),  s = r / R < 1.
 // Unnormalised: the operators that use it divide by its lattice sum (sph_context.cpp), as they
 // do the cubic spline's.
@@ -10,7 +10,9 @@ namespace washout {
 
 class WendlandShape {
  public:
-  explicit WendlandShape(double support) : support_(support), inv_(1.0 / support) {}
+  // A support of 0 marks the shape unused (SphContext then keeps the cubic spline).
+  explicit WendlandShape(double support)
+      : support_(support), inv_(support > 0.0 ? 1.0 / support : 0.0) {}
 
   double support() const { return support_; }
 

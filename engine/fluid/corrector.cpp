@@ -4,7 +4,10 @@
 //   <grad P>_i = rho_i sum_j m_j (P_i/rho_i^2 + P_j/rho_j^2) grad W_ij   (default; conserves
 //   momentum)
 // or the difference form (1/rho_i) sum_j m_j (P_j - P_i) grad W_ij, both with equal volumes
-// V = m/rho0 and the lattice normalisation. A boundary neighbour w carries the virtual pressure
+// V = m/rho0 and the lattice normalisation. In 3D the symmetric form's pair force takes the
+// Wendland C2 shape of support 2 d0 in place of grad W (symmetric_kernel = "auto"): with the
+// cubic spline a 3D lattice under pressure buckles into sliding columns (docs/method.md, the
+// fifteenth session). A boundary neighbour w carries the virtual pressure
 // P_w = P_i + g_iw of the Neumann wall condition (see pressure_poisson.cpp).
 //
 // Free-surface particles see neighbours on one side only. Where the PPE holds P = 0 at d0/2

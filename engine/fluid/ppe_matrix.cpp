@@ -13,7 +13,7 @@
 // laplacian stands for the difference form; the zero-order term moves particle i by
 // -(dt/rho0) 2 P_i S_i and changes its own divergence by (dt/rho0) 2 |S_i|^2 P_i, so a row the
 // symmetric gradient will correct gains 2 |S_i|^2 on its diagonal (2 S_i . S_i^K where the
-// symmetric gradient's pair force has its own kernel K, symmetric_kernel = "wendland": the
+// symmetric gradient's pair force has its own kernel K, the Wendland shape of 3D runs: the
 // corrector moves the particle along S_i^K, the divergence sees it through S_i). Without it the
 // projection overshoots there and the next step answers with a pressure of the other sign: in the
 // 2D wash-out at d0 = 0.005 m the water beside the girder alternated between -0.5 and +0.6 MPa step
