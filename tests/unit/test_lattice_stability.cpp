@@ -25,34 +25,34 @@ struct SoftestMode {
   double largest = 0.0;  // the largest eigenvalue met, for scale
 };
 
-// H(x) = W'' e e^T + (W'/r) (I - e e^T), W'' by a central difference of the kernel's W'.
-Eigen::Matrix3d kernel_hessian(const CubicSplineKernel& W, const Eigen::Vector3d& x) {
-  const double r = x.norm(), dr = 1e-6 * W.h();
-  const double second = (W.derivative(r + dr) - W.derivative(r - dr)) / (2.0 * dr);
+// H(x) = W'' e e^T + (W'/r) (I - e e^T) from dW/dr, W'' by a central difference.
+template <class FirstDerivative>
+Eigen::Matrix3d hessian(FirstDerivative&& first, const Eigen::Vector3d& x, double dr) {
+  const double r = x.norm();
+  const double second = (first(r + dr) - first(r - dr)) / (2.0 * dr);
   const Eigen::Vector3d e = x / r;
   return second * e * e.transpose() +
-         W.derivative(r) / r * (Eigen::Matrix3d::Identity() - e * e.transpose());
+         first(r) / r * (Eigen::Matrix3d::Identity() - e * e.transpose());
+}
+
+Eigen::Matrix3d kernel_hessian(const CubicSplineKernel& W, const Eigen::Vector3d& x) {
+  return hessian([&](double r) { return W.derivative(r); }, x, 1e-6 * W.h());
 }
 
 // V c H of the symmetric gradient's pair force: the cubic spline's, or the Wendland shape's
-// where the context uses it (symmetric_kernel = "wendland").
+// where the context uses it (symmetric_kernel = "wendland", or "auto" in 3D).
 Eigen::Matrix3d pair_force_hessian(const SphContext& ctx, const Eigen::Vector3d& x) {
   if (ctx.symmetric_shape.support() <= 0.0)
     return ctx.volume * ctx.gradient_correction * kernel_hessian(ctx.kernel, x);
   const auto first = [&](double r) { return r * ctx.symmetric_shape.derivative_over_r(r); };
-  const double r = x.norm(), dr = 1e-6 * ctx.d0;
-  const double second = (first(r + dr) - first(r - dr)) / (2.0 * dr);
-  const Eigen::Vector3d e = x / r;
-  return ctx.volume * ctx.symmetric_correction *
-         (second * e * e.transpose() +
-          first(r) / r * (Eigen::Matrix3d::Identity() - e * e.transpose()));
+  return ctx.volume * ctx.symmetric_correction * hessian(first, x, 1e-6 * ctx.d0);
 }
 
 // U^T M(k) U for one wave k [1/m] and unit polarisation U.
 double stiffness(const SphContext& ctx, const Eigen::Vector3d& k, const Eigen::Vector3d& U) {
   const int reach = static_cast<int>(std::ceil(2.0 * ctx.h / ctx.d0));
   double sum = 0.0;
-  for (int c = -reach; c <= reach; ++c)
+  for (int c = (ctx.dim == 3 ? -reach : 0); c <= (ctx.dim == 3 ? reach : 0); ++c)
     for (int b = -reach; b <= reach; ++b)
       for (int a = -reach; a <= reach; ++a) {
         const Eigen::Vector3d x = ctx.d0 * Eigen::Vector3d(a, b, c);
