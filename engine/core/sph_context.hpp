@@ -54,10 +54,11 @@ struct SphContext {
   // own term in the PPE's diagonal); the cubic spline's gradient_weight unless
   // use_wendland_symmetric_gradient() was called.
   double symmetric_gradient_weight(double r) const {
-    if (symmetric_shape.support() > 0.0)
+    if (symmetric_has_own_kernel())
       return symmetric_correction * volume * symmetric_shape.derivative_over_r(r);
     return gradient_weight(r);
   }
+  bool symmetric_has_own_kernel() const { return symmetric_shape.support() > 0.0; }
 
   // The laplacian's pair weight 2 V (r . grad W) / (r^2 + eta^2) (METHOD.md, with r . grad W =
   // W'(r) r and the lattice normalisation); <lap f>_i = sum_j laplacian_weight (f_i - f_j).

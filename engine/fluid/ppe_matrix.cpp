@@ -65,10 +65,11 @@ void assemble_ppe_matrix(const SphContext& ctx, const NeighborList& list, const 
     double cut_force[3] = {0, 0, 0};  // S_i of the symmetric gradient's own kernel
     // The rows the corrector takes in symmetric form: all but the surface's (corrector.cpp).
     const bool own_term = symmetric_gradient && !work.free_surface[i];
+    const bool own_kernel = own_term && ctx.symmetric_has_own_kernel();
     for_each_neighbor(ctx, list, p, i, [&](const NeighborPair& q) {
       const double c = -ctx.laplacian_weight(q.r, q.r2);  // c_ij >= 0
       const double g = own_term ? ctx.gradient_weight(q.r) : 0.0;
-      const double k = own_term ? ctx.symmetric_gradient_weight(q.r) : 0.0;
+      const double k = own_kernel ? ctx.symmetric_gradient_weight(q.r) : g;
       for (int a = 0; a < ctx.dim; ++a) {
         missing[a] += c * q.d[a];  // -c (x_j - x_i)
         cut[a] += g * q.d[a];

@@ -42,39 +42,38 @@ Eigen::Matrix3d kernel_hessian(const CubicSplineKernel& W, const Eigen::Vector3d
 // V c H of the symmetric gradient's pair force: the cubic spline's, or the Wendland shape's
 // where the context uses it (symmetric_kernel = "wendland", or "auto" in 3D).
 Eigen::Matrix3d pair_force_hessian(const SphContext& ctx, const Eigen::Vector3d& x) {
-  if (ctx.symmetric_shape.support() <= 0.0)
+  if (!ctx.symmetric_has_own_kernel())
     return ctx.volume * ctx.gradient_correction * kernel_hessian(ctx.kernel, x);
   const auto first = [&](double r) { return r * ctx.symmetric_shape.derivative_over_r(r); };
   return ctx.volume * ctx.symmetric_correction * hessian(first, x, 1e-6 * ctx.d0);
 }
 
-// U^T M(k) U for one wave k [1/m] and unit polarisation U.
-double stiffness(const SphContext& ctx, const Eigen::Vector3d& k, const Eigen::Vector3d& U) {
+// The lattice sites within the support 2h of the origin, the origin excluded.
+std::vector<Eigen::Vector3d> lattice_sites(const SphContext& ctx) {
   const int reach = static_cast<int>(std::ceil(2.0 * ctx.h / ctx.d0));
-  double sum = 0.0;
+  std::vector<Eigen::Vector3d> sites;
   for (int c = (ctx.dim == 3 ? -reach : 0); c <= (ctx.dim == 3 ? reach : 0); ++c)
     for (int b = -reach; b <= reach; ++b)
       for (int a = -reach; a <= reach; ++a) {
         const Eigen::Vector3d x = ctx.d0 * Eigen::Vector3d(a, b, c);
-        if ((a == 0 && b == 0 && c == 0) || x.norm() >= 2.0 * ctx.h) continue;
-        sum += U.dot(pair_force_hessian(ctx, x) * U) * (1.0 - std::cos(k.dot(x)));
+        if ((a != 0 || b != 0 || c != 0) && x.norm() < 2.0 * ctx.h) sites.push_back(x);
       }
+  return sites;
+}
+
+// U^T M(k) U for one wave k [1/m] and unit polarisation U.
+double stiffness(const SphContext& ctx, const Eigen::Vector3d& k, const Eigen::Vector3d& U) {
+  double sum = 0.0;
+  for (const Eigen::Vector3d& x : lattice_sites(ctx))
+    sum += U.dot(pair_force_hessian(ctx, x) * U) * (1.0 - std::cos(k.dot(x)));
   return sum;
 }
 
 // The softest mode of M(k) on the k grid (0..pi/d0 in samples steps along each axis).
 SoftestMode softest_mode(const SphContext& ctx, int samples) {
-  const int reach = static_cast<int>(std::ceil(2.0 * ctx.h / ctx.d0));
-  std::vector<Eigen::Vector3d> sites;
+  const std::vector<Eigen::Vector3d> sites = lattice_sites(ctx);
   std::vector<Eigen::Matrix3d> hessians;
-  for (int k = (ctx.dim == 3 ? -reach : 0); k <= (ctx.dim == 3 ? reach : 0); ++k)
-    for (int j = -reach; j <= reach; ++j)
-      for (int i = -reach; i <= reach; ++i) {
-        const Eigen::Vector3d x = ctx.d0 * Eigen::Vector3d(i, j, k);
-        if ((i == 0 && j == 0 && k == 0) || x.norm() >= 2.0 * ctx.h) continue;
-        sites.push_back(x);
-        hessians.push_back(pair_force_hessian(ctx, x));
-      }
+  for (const Eigen::Vector3d& x : sites) hessians.push_back(pair_force_hessian(ctx, x));
   SoftestMode softest;
   softest.eigenvalue = std::numeric_limits<double>::max();
   const int kz_samples = ctx.dim == 3 ? samples : 0;
