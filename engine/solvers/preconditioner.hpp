@@ -17,7 +17,8 @@ class Preconditioner {
   // unchanged (LinearSolver::solve_again), so whatever was built for it still holds.
   virtual void prepare(const CsrMatrix& A, bool same_matrix) = 0;
   virtual void apply(const std::vector<double>& r, std::vector<double>& z) = 0;  // z = M^-1 r
-  // After each solve: the iterations it took (a preconditioner that has gone stale can tell).
+  // After the first solve with a new matrix: the iterations it took (a preconditioner that has
+  // gone stale can tell). Not called for solve_again: other right-hand sides, other tolerances.
   virtual void solved(int /*iterations*/) {}
 };
 
