@@ -49,11 +49,13 @@ struct PpeStatistics {
 // walls: what the scene fixes for its walls (none: a fluid without boundary particles).
 // symmetric_gradient: the corrector takes the symmetric form inside the fluid (GradientForms),
 // whose zero-order term the matrix then holds (ppe_matrix.cpp).
+// stable_rows: one row per fluid particle, in particle order, those whose pressure is given
+// taking identity rows (number_pressure_unknowns, pressure_poisson_parts.hpp).
 PpeStatistics assemble_pressure_poisson(const SphContext& ctx, const NeighborList& list,
                                         const Particles& p, const Vec3& gravity, double alpha,
                                         double dt, bool ghost_surface, FluidWork& work,
                                         const WallConditions& walls = WallConditions::none(),
-                                        bool symmetric_gradient = false);
+                                        bool symmetric_gradient = false, bool stable_rows = false);
 // Copies the solution back to the fluid particles' pressure (P = 0 on the free surface).
 void scatter_pressure(const FluidWork& work, Particles& p);
 // Initial guess for an iterative solve: the previous pressure of each unknown.

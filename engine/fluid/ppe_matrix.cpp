@@ -50,6 +50,16 @@ void assemble_ppe_matrix(const SphContext& ctx, const NeighborList& list, const 
     if (work.free_surface[i]) flags.touches_surface[row] = flags.anchored[row] = 1;
     A.row_start[row + 1] = count;
   }
+  // Rows no particle holds (stable_rows: a particle whose pressure is given) are identity rows,
+  // P = 0 with a zero right-hand side, and anchored, so that no pressure level is fixed there.
+  std::vector<std::uint8_t> identity_row(rows, 1);
+  for (std::size_t i = 0; i < n; ++i)
+    if (work.unknown[i] >= 0) identity_row[work.unknown[i]] = 0;
+  for (std::size_t r = 0; r < rows; ++r) {
+    if (!identity_row[r]) continue;
+    A.row_start[r + 1] = 1;
+    flags.anchored[r] = 1;
+  }
   for (std::size_t r = 0; r < rows; ++r) A.row_start[r + 1] += A.row_start[r];
   A.column.resize(A.row_start[rows]);
   A.value.resize(A.row_start[rows]);
@@ -95,6 +105,11 @@ void assemble_ppe_matrix(const SphContext& ctx, const NeighborList& list, const 
           0.0, 2.0 * (cut[0] * cut_force[0] + cut[1] * cut_force[1] + cut[2] * cut_force[2]));
     A.column[A.row_start[row]] = row;
     A.value[A.row_start[row]] = diagonal;
+  }
+  for (std::size_t r = 0; r < rows; ++r) {
+    if (!identity_row[r]) continue;
+    A.column[A.row_start[r]] = static_cast<std::int32_t>(r);
+    A.value[A.row_start[r]] = 1.0;
   }
 }
 

@@ -28,7 +28,8 @@
 
 namespace washout {
 
-std::size_t number_pressure_unknowns(const Particles& p, bool ghost_surface, FluidWork& work) {
+std::size_t number_pressure_unknowns(const Particles& p, bool ghost_surface, bool stable_rows,
+                                     FluidWork& work) {
   const std::size_t n = p.fluid_count;
   // A particle whose pressure is given, not solved for: P = 0 on it (an isolated drop, or any
   // surface particle without the ghost form) or the squeeze-film pressure.
@@ -37,23 +38,28 @@ std::size_t number_pressure_unknowns(const Particles& p, bool ghost_surface, Flu
            (!ghost_surface && work.free_surface[i] == FluidWork::kSurface);
   };
   work.unknown.assign(n, -1);
-  std::size_t rows = 0;
-  for (std::size_t i = 0; i < n; ++i)
-    if (!given(i)) work.unknown[i] = static_cast<std::int32_t>(rows++);
-  return rows;
+  std::size_t unknowns = 0;
+  for (std::size_t i = 0; i < n; ++i) {
+    if (given(i)) continue;
+    work.unknown[i] = static_cast<std::int32_t>(stable_rows ? i : unknowns);
+    ++unknowns;
+  }
+  work.matrix.rows = stable_rows ? n : unknowns;
+  return unknowns;
 }
 
 PpeStatistics assemble_pressure_poisson(const SphContext& ctx, const NeighborList& list,
                                         const Particles& p, const Vec3& gravity, double alpha,
                                         double dt, bool ghost_surface, FluidWork& work,
-                                        const WallConditions& walls, bool symmetric_gradient) {
-  work.matrix.rows = number_pressure_unknowns(p, ghost_surface, work);
+                                        const WallConditions& walls, bool symmetric_gradient,
+                                        bool stable_rows) {
+  const std::size_t unknowns = number_pressure_unknowns(p, ghost_surface, stable_rows, work);
   PpeRowFlags flags;
   assemble_ppe_matrix(ctx, list, p, ghost_surface, symmetric_gradient, work, flags);
   add_known_pressures(ctx, list, p, walls, gravity, dt, work);
   subtract_ppe_source(ctx, list, p, walls, gravity, alpha, dt, flags, work);
   PpeStatistics stats;
-  stats.unknowns = work.matrix.rows;
+  stats.unknowns = unknowns;
   stats.nonzeros = work.matrix.nonzeros();
   stats.pinned_components = fix_free_pressure_levels(flags.anchored, work.matrix, work.rhs);
   return stats;

@@ -21,9 +21,14 @@ struct PpeRowFlags {
 };
 
 // Numbers the unknowns in work.unknown (-1: the pressure is given: P = 0 on an isolated drop or,
-// without the ghost form, on a surface particle; the film pressure in a squeeze film). Returns
-// the number of rows.
-std::size_t number_pressure_unknowns(const Particles& p, bool ghost_surface, FluidWork& work);
+// without the ghost form, on a surface particle; the film pressure in a squeeze film) and sets
+// work.matrix.rows. Returns the number of unknowns. stable_rows: the row of fluid particle i is
+// i, and a particle whose pressure is given keeps its row as an identity row (P = 0, decoupled):
+// the system's size and order then stay from step to step while drops break off and films form,
+// so that a multigrid hierarchy built for an earlier step still fits (pcg_amg's reuse); otherwise
+// the rows are the unknowns alone, in particle order.
+std::size_t number_pressure_unknowns(const Particles& p, bool ghost_surface, bool stable_rows,
+                                     FluidWork& work);
 
 // The matrix: row pattern and laplacian coefficients, -c_ij off the diagonal and sum_j c_ij over
 // the fluid neighbours on it (a boundary neighbour's P_w - P_i is known: add_known_pressures),

@@ -282,10 +282,18 @@ void Simulation::run_stage(Stage stage, StepInProgress& now) {
       update_wall_accelerations(particles_, solved_bodies_, dt, previous_wall_velocity_,
                                 work_.boundary);
       return;
-    case Stage::ppe_assembly:
+    case Stage::ppe_assembly: {
+      // BoomerAMG's hierarchy serves later steps only while the system keeps its size and order:
+      // with pcg_amg every fluid particle keeps a row, a drop breaking off or a squeeze film
+      // forming turns rows into identity rows instead of renumbering the rest (a new set-up
+      // nearly every step of the 3D wash-out after the surge's impact otherwise).
+      const bool stable_rows =
+          resolve_solver(prm.solver, prm.dim, particles_.fluid_count, body_coupled_) == "pcg_amg";
       now.ppe = assemble_pressure_poisson(ctx_, neighbors_, particles_, prm.gravity, prm.alpha, dt,
-                                          ghost_surface_, work_, walls_, gradient_forms_.symmetric);
+                                          ghost_surface_, work_, walls_, gradient_forms_.symmetric,
+                                          stable_rows);
       return;
+    }
     case Stage::ppe_solve:
       solve_pressure(now);
       return;

@@ -176,5 +176,50 @@ TEST(PressurePoisson, SymmetricGradientsZeroOrderTermIsOnTheDiagonal) {
   check_zero_order_term_on_the_diagonal(true);
 }
 
+// With stable rows (what pcg_amg gets) every fluid particle keeps row i, and a particle whose
+// pressure is given takes an identity row: the system is the compact one with decoupled rows
+// added, so the same pressures come out of it.
+TEST(PressurePoisson, StableRowsAddIdentityRowsAndChangeNoPressure) {
+  LatticeSystem sys(12, 0.05, irregular_offset);
+  auto& [ctx, p, list, work] = sys;
+  for (std::size_t i = 0; i < 12; ++i) work.free_surface[i] = 1;  // bottom row: P = 0 given
+  for (std::size_t i = 0; i < p.size(); ++i)
+    work.u_star[0][i] = std::sin(7.0 * p.position[0][i]) * std::cos(5.0 * p.position[1][i]);
+  const auto solve = [&](bool stable) {
+    const auto stats = assemble_pressure_poisson(ctx, list, p, Vec3::Zero(), 0.05, 1e-3, false,
+                                                 work, WallConditions::none(), false, stable);
+    EXPECT_EQ(stats.unknowns, p.size() - 12);
+    EXPECT_EQ(work.matrix.rows, stable ? p.size() : p.size() - 12);
+    auto solver = make_solver("pcg_amg", 1e-12, 1000);
+    std::vector<double> x(work.matrix.rows, 0.0);
+    EXPECT_TRUE(solver->solve(work.matrix, work.rhs, x).converged);
+    work.solution = x;
+    scatter_pressure(work, p);
+    return p.pressure;
+  };
+  const std::vector<double> compact = solve(false);
+  const std::vector<double> stable = solve(true);
+  const CsrMatrix& A = work.matrix;
+  for (std::size_t i = 0; i < p.size(); ++i) {
+    if (i < 12) {  // the given row: P_i = 0, nothing else
+      EXPECT_EQ(work.unknown[i], -1);
+      EXPECT_EQ(A.row_start[i + 1] - A.row_start[i], 1);
+      EXPECT_EQ(A.column[A.row_start[i]], static_cast<std::int32_t>(i));
+      EXPECT_EQ(A.value[A.row_start[i]], 1.0);
+      EXPECT_EQ(work.rhs[i], 0.0);
+    } else {
+      EXPECT_EQ(work.unknown[i], static_cast<std::int32_t>(i));
+    }
+  }
+  double scale = 0, difference = 0;
+  for (std::size_t i = 0; i < p.size(); ++i) {
+    scale = std::max(scale, std::abs(compact[i]));
+    difference = std::max(difference, std::abs(stable[i] - compact[i]));
+  }
+  std::printf("largest pressure %.3e, stable - compact rows %.1e\n", scale, difference);
+  EXPECT_GT(scale, 0.0);
+  EXPECT_LT(difference, 1e-9 * scale);
+}
+
 }  // namespace
 }  // namespace washout
