@@ -286,7 +286,9 @@ void Simulation::run_stage(Stage stage, StepInProgress& now) {
       // BoomerAMG's hierarchy serves later steps only while the system keeps its size and order:
       // with pcg_amg every fluid particle keeps a row, a drop breaking off or a squeeze film
       // forming turns rows into identity rows instead of renumbering the rest (a new set-up
-      // nearly every step of the 3D wash-out after the surge's impact otherwise).
+      // nearly every step of the 3D wash-out after the surge's impact otherwise). Decided on the
+      // fluid's size, the solver on the unknowns' (solve_pressure): where they fall on either side
+      // of a threshold the other solvers solve the identity rows as they are.
       const bool stable_rows =
           resolve_solver(prm.solver, prm.dim, particles_.fluid_count, body_coupled_) == "pcg_amg";
       now.ppe = assemble_pressure_poisson(ctx_, neighbors_, particles_, prm.gravity, prm.alpha, dt,

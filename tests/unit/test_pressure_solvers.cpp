@@ -70,12 +70,17 @@ TEST(PressureSolvers, AmgIterationsStayFlatWhereJacobiGrows) {
   EXPECT_LT(amg_large, jacobi_large / 3);
 }
 
-TEST(PressureSolvers, AmgSetupServesLaterMatricesOfTheSameSize) {
+// A pcg_amg solver whose set-up serves `reuse` solves, the solver counters zeroed.
+std::unique_ptr<LinearSolver> amg_solver_counted_afresh(int reuse, double tolerance) {
   AmgOptions options;
-  options.reuse_solves = 3;
-  auto solver = make_amg_pcg_solver(1e-8, 1000, options);
-  auto& counters = solver_counters();
-  counters = SolverCounters{};
+  options.reuse_solves = reuse;
+  solver_counters() = SolverCounters{};
+  return make_amg_pcg_solver(tolerance, 1000, options);
+}
+
+TEST(PressureSolvers, AmgSetupServesLaterMatricesOfTheSameSize) {
+  auto solver = amg_solver_counted_afresh(3, 1e-8);
+  const auto& counters = solver_counters();
   // Three matrices of one size (the scale changes, as the PPE's does with dt), then another size.
   for (double scale : {1.0, 1.3, 0.7}) {
     const CsrMatrix A = laplacian_3d(16, scale);
@@ -101,11 +106,8 @@ TEST(PressureSolvers, AmgStalenessIsJudgedOnNewMatricesOnly) {
   // to other tolerances: many more iterations than the step's own solve without the hierarchy
   // having gone stale. Those must not force a new set-up; a later matrix of the same size keeps
   // the hierarchy.
-  AmgOptions options;
-  options.reuse_solves = 10;
-  auto solver = make_amg_pcg_solver(1e-4, 1000, options);
-  auto& counters = solver_counters();
-  counters = SolverCounters{};
+  auto solver = amg_solver_counted_afresh(10, 1e-4);
+  const auto& counters = solver_counters();
   const CsrMatrix A = laplacian_3d(16);
   std::vector<double> x(A.rows, 0.0);
   const SolveReport first = solver->solve(A, smooth_rhs(A.rows), x);
@@ -115,7 +117,7 @@ TEST(PressureSolvers, AmgStalenessIsJudgedOnNewMatricesOnly) {
   std::printf("step solve %d iterations, response to 1e-13 %d\n", first.iterations,
               tight.iterations);
   ASSERT_TRUE(tight.converged);
-  ASSERT_GT(tight.iterations, options.stale_growth * first.iterations + 2);  // the old trigger
+  ASSERT_GT(tight.iterations, AmgOptions{}.stale_growth * first.iterations + 2);  // old trigger
   const CsrMatrix later = laplacian_3d(16, 1.2);
   EXPECT_TRUE(solver->solve(later, smooth_rhs(later.rows), x).converged);
   EXPECT_EQ(counters.setups, 1);
