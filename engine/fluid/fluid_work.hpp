@@ -18,8 +18,11 @@ struct FluidWork {
   static constexpr std::uint8_t kSurface = 1, kIsolated = 2;
   std::vector<std::uint8_t> free_surface;
   std::vector<double> eddy_viscosity;  // nu_t (fluid; empty without turbulence)
-  BoundaryWork boundary;               // markers, wall accelerations, squeeze films of this step
-  std::vector<std::int32_t> unknown;   // PPE row of a fluid particle, or -1
+  // Held from step to step (surface_strain.cpp): the volumetric strain each fluid particle has
+  // accumulated while within a support of the free surface, 0 elsewhere; empty when not used.
+  std::vector<double> surface_strain;
+  BoundaryWork boundary;              // markers, wall accelerations, squeeze films of this step
+  std::vector<std::int32_t> unknown;  // PPE row of a fluid particle, or -1
   CsrMatrix matrix;
   std::vector<double> rhs, solution;
 };

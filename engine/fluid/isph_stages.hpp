@@ -56,6 +56,12 @@ PpeStatistics assemble_pressure_poisson(const SphContext& ctx, const NeighborLis
                                         double dt, bool ghost_surface, FluidWork& work,
                                         const WallConditions& walls = WallConditions::none(),
                                         bool symmetric_gradient = false, bool stable_rows = false);
+// The volume error of particles within a support of the free surface, where the summation
+// density cannot tell it (surface_strain.cpp): before the positions advance by dt u, each such
+// particle (a free-surface neighbour, not on the surface itself) adds dt <div u>_i to
+// work.surface_strain; every other particle's is reset to 0.
+void accumulate_surface_strain(const SphContext& ctx, const NeighborList& list, const Particles& p,
+                               double dt, FluidWork& work);
 // Copies the solution back to the fluid particles' pressure (P = 0 on the free surface).
 void scatter_pressure(const FluidWork& work, Particles& p);
 // Initial guess for an iterative solve: the previous pressure of each unknown.

@@ -61,6 +61,8 @@ void subtract_ppe_source(const SphContext& ctx, const NeighborList& list, const 
   const double g = gravity.norm();
   const double clearance_speed =
       g > 0.0 ? std::sqrt(g * ctx.d0) : std::numeric_limits<double>::infinity();
+  // Held since the previous step's move (empty in the first step, or with the option off).
+  const bool strain = work.surface_strain.size() == n;
 #pragma omp parallel for schedule(static)
   for (std::size_t i = 0; i < n; ++i) {
     const std::int32_t row = work.unknown[i];
@@ -102,8 +104,12 @@ void subtract_ppe_source(const SphContext& ctx, const NeighborList& list, const 
         });
     // Within a kernel support of the free surface the summation density is low only because the
     // support is truncated, not because the fluid expanded: the density-invariance term would
-    // read that deficit as an error and pull the surface in. It acts on interior particles only.
-    const double density_error = near_surface ? 0.0 : (ctx.rho0 - p.density[i]) / ctx.rho0;
+    // read that deficit as an error and pull the surface in. There the particle's accumulated
+    // volumetric strain stands for the error (surface_strain.cpp; alpha_near_surface = "off":
+    // no term), except on the surface itself, whose pressure the ghost condition sets.
+    const double density_error = !near_surface ? (ctx.rho0 - p.density[i]) / ctx.rho0
+                                 : strain && !work.free_surface[i] ? work.surface_strain[i]
+                                                                   : 0.0;
     work.rhs[row] -= ctx.rho0 / dt * div_u + density_scale * density_error;
   }
 }

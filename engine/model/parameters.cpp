@@ -61,6 +61,12 @@ const std::vector<ParameterInfo>& ParameterSet::engine_table() {
        "relaxation of the density-invariance term in the PPE (0 divergence-free, 1 "
        "density-invariant); calibrated by the hydrostatic test, see docs/method.md",
        d.alpha},
+      {"alpha_near_surface", "-",
+       "the density-invariance term within a kernel support of the free surface, where the "
+       "summation density is low because the support is cut: \"strain\" (the particle's volume "
+       "error there is its velocity divergence accumulated over the steps it has spent there) or "
+       "\"off\" (no term in those rows, as before the sixteenth session; docs/method.md)",
+       d.alpha_near_surface},
       {"free_surface_threshold", "-",
        "a particle whose density is below this fraction of the full-support density is on the "
        "free surface and takes P = 0",
@@ -378,6 +384,7 @@ SimulationParameters SimulationParameters::from(const ParameterSet& set) {
   }
   p.alpha = non_negative("alpha");
   if (p.alpha > 1) throw ParameterError("alpha", "parameter 'alpha' must lie in [0, 1]");
+  p.alpha_near_surface = one_of("alpha_near_surface", {"strain", "off"});
   p.free_surface_threshold = in_unit_interval("free_surface_threshold");
   p.surface_pressure = one_of("surface_pressure", {"ghost", "on_particles"});
   p.dt = non_negative("dt");

@@ -71,6 +71,11 @@ struct SimulationParameters {
   double viscosity = 1e-6;  // kinematic, m^2/s
   Vec3 gravity = Vec3(0, -9.81, 0);
   double alpha = 0.05;
+  // The density-invariance term within a support of the free surface, where the summation
+  // density is low because the support is cut: "strain" measures the volume error there by the
+  // particle's accumulated velocity divergence; "off" leaves those rows without the term
+  // (docs/method.md, sixteenth session).
+  std::string alpha_near_surface = "strain";
   double free_surface_threshold = 0.9;
   std::string surface_pressure = "ghost";
   double dt = 0.0;  // 0: adaptive

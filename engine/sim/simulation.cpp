@@ -143,6 +143,7 @@ Simulation::Simulation(Model model)
   features.wall_friction = prm.wall_friction == "log_law";
   features.shifting = prm.shifting > 0 || prm.shifting_with_speed > 0;
   features.surface_smoothing = prm.surface_smoothing > 0;
+  features.surface_strain = prm.alpha > 0 && prm.alpha_near_surface == "strain";
   features.moving_walls = !moving_walls_.empty();
   features.probes = !model_.probes.empty();
   plan_ = compose_step(features);
@@ -318,6 +319,9 @@ void Simulation::run_stage(Stage stage, StepInProgress& now) {
                               surface_smoothing_for_step(prm.surface_smoothing, step_courant(dt),
                                                          prm.surface_smoothing_courant),
                               shift_scratch_);
+      return;
+    case Stage::surface_strain:
+      accumulate_surface_strain(ctx_, neighbors_, particles_, dt, work_);
       return;
     case Stage::advect:
       max_speed_ = advance_positions(ctx_, particles_, dt);

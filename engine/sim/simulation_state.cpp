@@ -84,6 +84,7 @@ void Simulation::save_state(io::Checkpoint& c) const {
   if (!previous_wall_velocity_[0].empty())
     put_components(c, "previous_wall_velocity", previous_wall_velocity_);
   if (!work_.eddy_viscosity.empty()) c.reals["eddy_viscosity"] = work_.eddy_viscosity;
+  if (!work_.surface_strain.empty()) c.reals["surface_strain"] = work_.surface_strain;
   std::vector<double>& walls = c.reals["moving_wall_motion"];
   walls.clear();
   for (const auto& wall : moving_walls_)
@@ -138,6 +139,10 @@ void Simulation::restore_state(const io::Checkpoint& c) {
     work_.eddy_viscosity = c.real("eddy_viscosity", p.fluid_count);
   else
     work_.eddy_viscosity.clear();
+  if (c.has_real("surface_strain"))
+    work_.surface_strain = c.real("surface_strain", p.fluid_count);
+  else
+    work_.surface_strain.clear();
   const std::vector<double>& walls = c.real("moving_wall_motion", 6 * moving_walls_.size());
   for (std::size_t w = 0; w < moving_walls_.size(); ++w) {
     const double* m = walls.data() + 6 * w;

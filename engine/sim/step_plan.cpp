@@ -34,6 +34,8 @@ const char* stage_name(Stage stage) {
       return "corrector";
     case Stage::surface_smoothing:
       return "surface_smoothing";
+    case Stage::surface_strain:
+      return "surface_strain";
     case Stage::advect:
       return "advect";
     case Stage::shifting:
@@ -68,6 +70,7 @@ std::vector<Stage> compose_step(const SceneFeatures& f) {
     plan.push_back(Stage::body_loads);  // P^{n+1} belongs to x^n: before the fluid moves
   plan.push_back(Stage::corrector);
   if (f.surface_smoothing) plan.push_back(Stage::surface_smoothing);
+  if (f.surface_strain) plan.push_back(Stage::surface_strain);  // with the velocity that moves
   plan.push_back(Stage::advect);
   if (f.shifting) plan.push_back(Stage::shifting);
   if (f.moving_walls) plan.push_back(Stage::wall_positions);

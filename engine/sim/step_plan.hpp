@@ -24,6 +24,7 @@ enum class Stage : std::uint8_t {
   body_loads,          // pressure loads on the bodies (solved with them when dynamic)
   corrector,           // step 3: u = u* - dt/rho0 grad P
   surface_smoothing,   // free-surface particles take part of their neighbours' mean velocity
+  surface_strain,      // the volume error near the surface, dt <div u>, before the move
   advect,              // step 4: x += dt u
   shifting,            // Fickian particle shifting
   wall_positions,      // prescribed wall positions at t + dt
@@ -46,6 +47,7 @@ struct SceneFeatures {
   bool wall_friction = false;      // the law-of-the-wall stress
   bool shifting = false;           // any particle shifting
   bool surface_smoothing = false;  // XSPH on the free surface
+  bool surface_strain = false;     // the density-invariance term near the surface by its strain
   bool moving_walls = false;       // a wall with a prescribed motion
   bool probes = false;             // any probe
 };

@@ -50,7 +50,7 @@ TEST(StepPlan, BodiesBringTheirStagesAndNothingElse) {
 TEST(StepPlan, LoadsAreTakenBeforeTheFluidMovesAndChecksAfterTheClock) {
   SceneFeatures f;
   f.bodies = f.moving_walls = f.shifting = f.turbulence = f.probes = f.wall_friction = true;
-  f.surface_smoothing = true;
+  f.surface_smoothing = f.surface_strain = true;
   const auto plan = compose_step(f);
   std::printf("everything: %s\n", text(plan).c_str());
   const auto at = [&](Stage s) { return std::find(plan.begin(), plan.end(), s) - plan.begin(); };
@@ -58,9 +58,10 @@ TEST(StepPlan, LoadsAreTakenBeforeTheFluidMovesAndChecksAfterTheClock) {
   EXPECT_LT(at(Stage::predictor), at(Stage::wall_shear));
   EXPECT_LT(at(Stage::moving_walls), at(Stage::ppe_assembly));  // u_wall at t + dt in the PPE
   EXPECT_LT(at(Stage::ppe_solve), at(Stage::body_loads));
-  EXPECT_LT(at(Stage::body_loads), at(Stage::corrector));         // P^{n+1} belongs to x^n
-  EXPECT_LT(at(Stage::corrector), at(Stage::surface_smoothing));  // velocities, then positions
-  EXPECT_LT(at(Stage::surface_smoothing), at(Stage::advect));
+  EXPECT_LT(at(Stage::body_loads), at(Stage::corrector));              // P^{n+1} belongs to x^n
+  EXPECT_LT(at(Stage::corrector), at(Stage::surface_smoothing));       // velocities, then positions
+  EXPECT_LT(at(Stage::surface_smoothing), at(Stage::surface_strain));  // the moving velocity
+  EXPECT_LT(at(Stage::surface_strain), at(Stage::advect));             // at the old positions
   EXPECT_LT(at(Stage::advect), at(Stage::shifting));
   EXPECT_LT(at(Stage::bodies), at(Stage::clock));
   EXPECT_LT(at(Stage::clock), at(Stage::checks));
