@@ -35,10 +35,20 @@ void assemble_ppe_matrix(const SphContext& ctx, const NeighborList& list, const 
   A.row_start.assign(rows + 1, 0);
   flags.touches_surface.assign(rows, 0);
   flags.anchored.assign(rows, 0);
+  // With one row per fluid particle (rows == n: the stable layout, or every particle solved
+  // for), a particle whose pressure is given holds an identity row, P = 0 with a zero right-hand
+  // side, anchored so that no pressure level is fixed there; otherwise it holds no row.
+  const bool identity_rows = rows == n;
 #pragma omp parallel for schedule(static)
   for (std::size_t i = 0; i < n; ++i) {
     const std::int32_t row = work.unknown[i];
-    if (row < 0) continue;
+    if (row < 0) {
+      if (identity_rows) {
+        A.row_start[i + 1] = 1;
+        flags.anchored[i] = 1;
+      }
+      continue;
+    }
     std::int64_t count = 1;  // the diagonal
     for (std::uint64_t k = list.offset[i]; k < list.offset[i + 1]; ++k) {
       const std::size_t j = list.index[k];
@@ -50,16 +60,6 @@ void assemble_ppe_matrix(const SphContext& ctx, const NeighborList& list, const 
     if (work.free_surface[i]) flags.touches_surface[row] = flags.anchored[row] = 1;
     A.row_start[row + 1] = count;
   }
-  // Rows no particle holds (stable_rows: a particle whose pressure is given) are identity rows,
-  // P = 0 with a zero right-hand side, and anchored, so that no pressure level is fixed there.
-  std::vector<std::uint8_t> identity_row(rows, 1);
-  for (std::size_t i = 0; i < n; ++i)
-    if (work.unknown[i] >= 0) identity_row[work.unknown[i]] = 0;
-  for (std::size_t r = 0; r < rows; ++r) {
-    if (!identity_row[r]) continue;
-    A.row_start[r + 1] = 1;
-    flags.anchored[r] = 1;
-  }
   for (std::size_t r = 0; r < rows; ++r) A.row_start[r + 1] += A.row_start[r];
   A.column.resize(A.row_start[rows]);
   A.value.resize(A.row_start[rows]);
@@ -67,7 +67,13 @@ void assemble_ppe_matrix(const SphContext& ctx, const NeighborList& list, const 
 #pragma omp parallel for schedule(static)
   for (std::size_t i = 0; i < n; ++i) {
     const std::int32_t row = work.unknown[i];
-    if (row < 0) continue;
+    if (row < 0) {
+      if (identity_rows) {
+        A.column[A.row_start[i]] = static_cast<std::int32_t>(i);
+        A.value[A.row_start[i]] = 1.0;
+      }
+      continue;
+    }
     std::int64_t slot = A.row_start[row] + 1;
     double diagonal = 0.0;
     double missing[3] = {0, 0, 0};    // m_i
@@ -105,11 +111,6 @@ void assemble_ppe_matrix(const SphContext& ctx, const NeighborList& list, const 
           0.0, 2.0 * (cut[0] * cut_force[0] + cut[1] * cut_force[1] + cut[2] * cut_force[2]));
     A.column[A.row_start[row]] = row;
     A.value[A.row_start[row]] = diagonal;
-  }
-  for (std::size_t r = 0; r < rows; ++r) {
-    if (!identity_row[r]) continue;
-    A.column[A.row_start[r]] = static_cast<std::int32_t>(r);
-    A.value[A.row_start[r]] = 1.0;
   }
 }
 

@@ -133,6 +133,14 @@ Simulation::Simulation(Model model)
   ghost_surface_ = prm.surface_pressure == "ghost";
   gradient_forms_.symmetric = prm.pressure_gradient == "symmetric";
   gradient_forms_.ghost_surface = ghost_surface_ && prm.surface_gradient == "ghost";
+  // BoomerAMG's hierarchy serves later steps only while the system keeps its size and order:
+  // with pcg_amg every fluid particle keeps a row, a drop breaking off or a squeeze film forming
+  // turns rows into identity rows instead of renumbering the rest (a new set-up nearly every step
+  // of the 3D wash-out after the surge's impact otherwise). Decided on the fluid's size (fixed for
+  // the run), the solver on the unknowns' (solve_pressure): where they fall on either side of a
+  // threshold the other solvers solve the identity rows as they are.
+  stable_ppe_rows_ =
+      resolve_solver(prm.solver, prm.dim, particles_.fluid_count, body_coupled_) == "pcg_amg";
   SceneFeatures features;
   features.bodies = bodies_ != nullptr;
   for (std::size_t b = 0; bodies_ && b < bodies_->size(); ++b)
@@ -283,20 +291,11 @@ void Simulation::run_stage(Stage stage, StepInProgress& now) {
       update_wall_accelerations(particles_, solved_bodies_, dt, previous_wall_velocity_,
                                 work_.boundary);
       return;
-    case Stage::ppe_assembly: {
-      // BoomerAMG's hierarchy serves later steps only while the system keeps its size and order:
-      // with pcg_amg every fluid particle keeps a row, a drop breaking off or a squeeze film
-      // forming turns rows into identity rows instead of renumbering the rest (a new set-up
-      // nearly every step of the 3D wash-out after the surge's impact otherwise). Decided on the
-      // fluid's size, the solver on the unknowns' (solve_pressure): where they fall on either side
-      // of a threshold the other solvers solve the identity rows as they are.
-      const bool stable_rows =
-          resolve_solver(prm.solver, prm.dim, particles_.fluid_count, body_coupled_) == "pcg_amg";
+    case Stage::ppe_assembly:
       now.ppe = assemble_pressure_poisson(ctx_, neighbors_, particles_, prm.gravity, prm.alpha, dt,
                                           ghost_surface_, work_, walls_, gradient_forms_.symmetric,
-                                          stable_rows);
+                                          stable_ppe_rows_);
       return;
-    }
     case Stage::ppe_solve:
       solve_pressure(now);
       return;

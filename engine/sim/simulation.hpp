@@ -217,6 +217,7 @@ class Simulation {
   std::vector<Stage> plan_;
   bool ghost_surface_ = true;
   GradientForms gradient_forms_;
+  bool stable_ppe_rows_ = false;  // one PPE row per fluid particle (pcg_amg's reuse)
   double time_ = 0.0;
   long step_ = 0;
   std::uint64_t layout_fingerprint_ = 0;
