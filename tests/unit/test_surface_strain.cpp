@@ -8,29 +8,15 @@
 #include <cmath>
 #include <cstdio>
 
-#include "engine/core/neighbor_grid.hpp"
-#include "engine/fluid/isph_stages.hpp"
+#include "support/fluid_block.hpp"
 
 namespace washout {
 namespace {
 
 // A 2D block of fluid, n x n particles, its top row the free surface.
-struct Block {
-  SphContext ctx{2, 0.01, 1.2, 1000.0, PeriodicBox{}};
-  Particles p;
-  NeighborList list;
-  FluidWork work;
+struct Block : testing::FluidBlock {
   int n;
-  explicit Block(int n_) : n(n_) {
-    p.dim = 2;
-    for (int j = 0; j < n; ++j)
-      for (int i = 0; i < n; ++i)
-        p.add(ParticleKind::Fluid, Vec3((i + 0.5) * ctx.d0, (j + 0.5) * ctx.d0, 0), Vec3::Zero(),
-              -1);
-    NeighborGrid grid;
-    grid.build(p, 2 * ctx.h, ctx.periodic);
-    grid.build_list(p, p.size(), 2 * ctx.h, list);
-    compute_summation_density(ctx, list, p);
+  explicit Block(int n_) : FluidBlock(n_, n_, 0, false, false), n(n_) {
     work.free_surface.assign(p.size(), 0);
     for (int i = 0; i < n; ++i) work.free_surface[index(i, n - 1)] = FluidWork::kSurface;
   }
