@@ -55,15 +55,23 @@ inline void difference_gradient(const SphContext& ctx, const NeighborList& list,
   });
 }
 
-// <grad f>_i, symmetric (momentum-conserving) form. value(pair) is f_j.
+// <grad f>_i, symmetric (momentum-conserving) form. value(pair) is f_j; pair_scale(pair) a factor
+// symmetric in i and j (the pair force stays antisymmetric).
+template <class Value, class PairScale>
+inline void symmetric_gradient(const SphContext& ctx, const NeighborList& list, const Particles& p,
+                               std::size_t i, double f_i, Value&& value, PairScale&& pair_scale,
+                               double grad[3]) {
+  grad[0] = grad[1] = grad[2] = 0.0;
+  for_each_neighbor(ctx, list, p, i, [&](const NeighborPair& q) {
+    const double f = ctx.symmetric_gradient_weight(q.r) * pair_scale(q) * (value(q) + f_i);
+    for (int a = 0; a < ctx.dim; ++a) grad[a] += f * q.d[a];
+  });
+}
 template <class Value>
 inline void symmetric_gradient(const SphContext& ctx, const NeighborList& list, const Particles& p,
                                std::size_t i, double f_i, Value&& value, double grad[3]) {
-  grad[0] = grad[1] = grad[2] = 0.0;
-  for_each_neighbor(ctx, list, p, i, [&](const NeighborPair& q) {
-    const double f = ctx.symmetric_gradient_weight(q.r) * (value(q) + f_i);
-    for (int a = 0; a < ctx.dim; ++a) grad[a] += f * q.d[a];
-  });
+  symmetric_gradient(
+      ctx, list, p, i, f_i, value, [](const NeighborPair&) { return 1.0; }, grad);
 }
 
 // <div u>_i. value(pair, u_j) writes u_j; u_i is given.

@@ -88,11 +88,19 @@ void correct_velocity(const SphContext& ctx, const NeighborList& list, Particles
       return q.j < n ? p.pressure[q.j]
                      : Pi + wall_pressure_jump(ctx, p, work, walls, gravity, i, q.j, q.d, dt);
     };
+    // The particle's own normalisation (gradient_scale.cpp): a pair factor in the symmetric form,
+    // the particle's factor in the difference form; the surface's forms are exact already.
+    const auto pair_scale = [&](const NeighborPair& q) {
+      return gradient_pair_scale(work, n, i, q.j);
+    };
     double grad[3];
-    if (forms.symmetric && !ghost && !corrected)
-      symmetric_gradient(ctx, list, p, i, Pi, neighbor_pressure, grad);
-    else
+    if (forms.symmetric && !ghost && !corrected) {
+      symmetric_gradient(ctx, list, p, i, Pi, neighbor_pressure, pair_scale, grad);
+    } else {
       difference_gradient(ctx, list, p, i, Pi, neighbor_pressure, grad);
+      if (!surface && !work.gradient_scale.empty())
+        for (int a = 0; a < ctx.dim; ++a) grad[a] *= work.gradient_scale[i];
+    }
     if (ghost) add_ghost_share(ctx, list, p, i, Pi, grad);
     if (corrected) {
       // L already normalises the sum: undo the lattice normalisation before applying it.

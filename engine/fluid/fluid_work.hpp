@@ -21,10 +21,25 @@ struct FluidWork {
   // Held from step to step (surface_strain.cpp): the volumetric strain each fluid particle has
   // accumulated while within a support of the free surface, 0 elsewhere; empty when not used.
   std::vector<double> surface_strain;
+  // The pressure gradient's scale s_i = 1 / m_i by the particle's own neighbours and where it came
+  // from: 1 measured (a full support), 2 and 3 the mean of the level before among the neighbours,
+  // 0 none (s = 1) (gradient_scale.cpp); empty when the lattice normalisation alone is used.
+  std::vector<double> gradient_scale;
+  std::vector<std::uint8_t> gradient_scale_level;
+  std::vector<double> gradient_scale_pending;  // scratch of the levels 2 and 3
   BoundaryWork boundary;              // markers, wall accelerations, squeeze films of this step
   std::vector<std::int32_t> unknown;  // PPE row of a fluid particle, or -1
   CsrMatrix matrix;
   std::vector<double> rhs, solution;
 };
+
+// The pair factor (s_i + s_j)/2 of the gradient scale; s_j = s_i for a boundary neighbour, and 1
+// where no scale is kept (the lattice normalisation alone).
+inline double gradient_pair_scale(const FluidWork& work, std::size_t n, std::size_t i,
+                                  std::size_t j) {
+  if (work.gradient_scale.empty()) return 1.0;
+  const double s_i = work.gradient_scale[i];
+  return j < n ? 0.5 * (s_i + work.gradient_scale[j]) : s_i;
+}
 
 }  // namespace washout

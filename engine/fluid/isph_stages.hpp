@@ -62,6 +62,12 @@ PpeStatistics assemble_pressure_poisson(const SphContext& ctx, const NeighborLis
 // work.surface_strain; every other particle's is reset to 0.
 void accumulate_surface_strain(const SphContext& ctx, const NeighborList& list, const Particles& p,
                                double dt, FluidWork& work);
+// The pressure gradient's normalisation by each particle's own neighbours (gradient_scale.cpp):
+// work.gradient_scale[i] = 1 / m_i, m_i the gradient moment of the kernel the corrector's form
+// uses (symmetric: its own kernel), measured where the support is full and averaged from those
+// neighbours within a support of the free surface.
+void compute_gradient_scale(const SphContext& ctx, const NeighborList& list, const Particles& p,
+                            bool symmetric, FluidWork& work);
 // Copies the solution back to the fluid particles' pressure (P = 0 on the free surface).
 void scatter_pressure(const FluidWork& work, Particles& p);
 // Initial guess for an iterative solve: the previous pressure of each unknown.

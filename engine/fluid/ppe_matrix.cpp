@@ -85,7 +85,8 @@ void assemble_ppe_matrix(const SphContext& ctx, const NeighborList& list, const 
     for_each_neighbor(ctx, list, p, i, [&](const NeighborPair& q) {
       const double c = -ctx.laplacian_weight(q.r, q.r2);  // c_ij >= 0
       const double g = own_term ? ctx.gradient_weight(q.r) : 0.0;
-      const double k = own_kernel ? ctx.symmetric_gradient_weight(q.r) : g;
+      const double k = (own_kernel ? ctx.symmetric_gradient_weight(q.r) : g) *
+                       (own_term ? gradient_pair_scale(work, n, i, q.j) : 1.0);
       for (int a = 0; a < ctx.dim; ++a) {
         missing[a] += c * q.d[a];  // -c (x_j - x_i)
         cut[a] += g * q.d[a];

@@ -97,6 +97,9 @@ struct SimulationParameters {
   double coupling_tolerance = 1e-2;  // body coupling's response solves, first pass
   int solver_max_iterations = 5000;
   std::string pressure_gradient = "symmetric";
+  // The corrector's gradient normalised by each particle's own neighbours ("particle") or by the
+  // lattice's sums alone ("lattice"; docs/method.md, seventeenth session).
+  std::string gradient_scale = "particle";
   // The symmetric gradient's pair force: "cubic" (METHOD.md's kernel), "wendland" (Wendland C2
   // of support 2 d0, whose lattice under pressure is stable in 3D) or "auto" (wendland in 3D,
   // where the cubic spline's lattice buckles; cubic in 2D, where it is neutral and the bodies'

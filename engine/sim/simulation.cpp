@@ -152,6 +152,7 @@ Simulation::Simulation(Model model)
   features.shifting = prm.shifting > 0 || prm.shifting_with_speed > 0;
   features.surface_smoothing = prm.surface_smoothing > 0;
   features.surface_strain = prm.alpha > 0 && prm.alpha_near_surface == "strain";
+  features.gradient_scale = prm.gradient_scale == "particle";
   features.moving_walls = !moving_walls_.empty();
   features.probes = !model_.probes.empty();
   plan_ = compose_step(features);
@@ -256,6 +257,9 @@ void Simulation::run_stage(Stage stage, StepInProgress& now) {
       compute_summation_density(ctx_, neighbors_, particles_);
       report.free_surface_particles =
           detect_free_surface(ctx_, neighbors_, particles_, prm.free_surface_threshold, work_);
+      return;
+    case Stage::gradient_scale:
+      compute_gradient_scale(ctx_, neighbors_, particles_, gradient_forms_.symmetric, work_);
       return;
     case Stage::wall_markers:
       total_active_boundary_ += mark_active_boundary(neighbors_, particles_, active_boundary_);

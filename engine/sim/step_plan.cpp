@@ -36,6 +36,8 @@ const char* stage_name(Stage stage) {
       return "surface_smoothing";
     case Stage::surface_strain:
       return "surface_strain";
+    case Stage::gradient_scale:
+      return "gradient_scale";
     case Stage::advect:
       return "advect";
     case Stage::shifting:
@@ -57,7 +59,9 @@ const char* stage_name(Stage stage) {
 }
 
 std::vector<Stage> compose_step(const SceneFeatures& f) {
-  std::vector<Stage> plan{Stage::neighbours, Stage::density, Stage::wall_markers};
+  std::vector<Stage> plan{Stage::neighbours, Stage::density};
+  if (f.gradient_scale) plan.push_back(Stage::gradient_scale);  // needs the surface, for the PPE
+  plan.push_back(Stage::wall_markers);
   if (f.bodies && f.dynamic_wall) plan.push_back(Stage::squeeze_film);
   if (f.turbulence) plan.push_back(Stage::turbulence);
   plan.push_back(Stage::predictor);

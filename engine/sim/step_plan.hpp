@@ -11,6 +11,7 @@ namespace washout {
 enum class Stage : std::uint8_t {
   neighbours,          // cell linked list and neighbour lists (METHOD.md "Neighbour search")
   density,             // summation density and free-surface detection
+  gradient_scale,      // the pressure gradient's normalisation by each particle's neighbours
   wall_markers,        // virtual-marker velocities of the walls in reach of the fluid
   squeeze_film,        // closing gaps between a dynamic body and another solid
   turbulence,          // Smagorinsky eddy viscosity
@@ -48,6 +49,7 @@ struct SceneFeatures {
   bool shifting = false;           // any particle shifting
   bool surface_smoothing = false;  // XSPH on the free surface
   bool surface_strain = false;     // the density-invariance term near the surface by its strain
+  bool gradient_scale = false;     // the pressure gradient normalised by each particle's support
   bool moving_walls = false;       // a wall with a prescribed motion
   bool probes = false;             // any probe
 };

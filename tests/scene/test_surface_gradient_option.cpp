@@ -4,8 +4,10 @@
 // - it removes the amplification per step that the surface velocity smoothing otherwise has to
 //   hold: without smoothing the 2D dam break at a/20 completes with it, while the corrected
 //   form stops after 110-120 steps at any cfl (printed for comparison);
-// - a floating box takes its Archimedes draft: within 2 % at H/d0 = 10 (measured 0.97 %;
-//   3.0 % with the corrected form, the default).
+// - a floating box takes its Archimedes draft: within 2 % at H/d0 = 10, the mean over the sixth
+//   second (measured +1.4 %; settled by 10 s at +1.6 %, the default corrected form at +0.2 %).
+//   Until the seventeenth session's gradient scale this ran 1.5 s, where the window's mean
+//   depends on the heave's phase (0.97 % then, 2.75 % with the scale).
 #include <gtest/gtest.h>
 
 #include <cstdio>
@@ -42,7 +44,7 @@ TEST(SurfaceGradientOption, GhostFormHoldsTheDamBreakWithoutSurfaceSmoothing) {
 
 TEST(SurfaceGradientOption, FloatingBoxTakesItsArchimedesDraft) {
   const auto out = testing::run_scene("floating_box_2d.lua", "floating_ghost_gradient",
-                                      {{"end_time", "1.5"}, {"surface_gradient", "ghost"}});
+                                      {{"end_time", "6"}, {"surface_gradient", "ghost"}});
   const double error = score(out, "draft");
   std::printf("floating box, d0 = 0.01 m, ghost surface gradient: draft error %.4f\n", error);
   EXPECT_LT(error, 0.02);

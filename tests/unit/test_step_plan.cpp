@@ -50,10 +50,12 @@ TEST(StepPlan, BodiesBringTheirStagesAndNothingElse) {
 TEST(StepPlan, LoadsAreTakenBeforeTheFluidMovesAndChecksAfterTheClock) {
   SceneFeatures f;
   f.bodies = f.moving_walls = f.shifting = f.turbulence = f.probes = f.wall_friction = true;
-  f.surface_smoothing = f.surface_strain = true;
+  f.surface_smoothing = f.surface_strain = f.gradient_scale = true;
   const auto plan = compose_step(f);
   std::printf("everything: %s\n", text(plan).c_str());
   const auto at = [&](Stage s) { return std::find(plan.begin(), plan.end(), s) - plan.begin(); };
+  EXPECT_LT(at(Stage::density), at(Stage::gradient_scale));       // it needs the free surface
+  EXPECT_LT(at(Stage::gradient_scale), at(Stage::ppe_assembly));  // the own term's pair factor
   EXPECT_LT(at(Stage::turbulence), at(Stage::predictor));
   EXPECT_LT(at(Stage::predictor), at(Stage::wall_shear));
   EXPECT_LT(at(Stage::moving_walls), at(Stage::ppe_assembly));  // u_wall at t + dt in the PPE
