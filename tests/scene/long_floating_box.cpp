@@ -78,9 +78,8 @@ void expect_settled(const std::string& scene, int dim, double d0, double end_tim
   const Settled s = settle(scene, dim, d0, end_time, window);
   std::printf(
       "%dD, d0 = %.4f m, %.0f s: draft over the last %.0f s %.5f m against D = %.4f m: error "
-      "%+.2f %% (bound %.1f %%), the box's height spread %.4f m in the first second, %.4f m in the "
-      "last "
-      "(ratio %.2f, bound %.2f), largest roll %.3f rad\n",
+      "%+.2f %% (bound %.1f %%), the box's height spread %.4f m in the first second, "
+      "%.4f m in the last (ratio %.2f, bound %.2f), largest roll %.3f rad\n",
       dim, d0, end_time, window, s.draft, D, 100 * (s.draft / D - 1), 100 * draft_bound / D,
       s.first_spread, s.spread, s.spread / s.first_spread, decay_bound, s.angle);
   EXPECT_LT(std::abs(s.draft - D), draft_bound);
@@ -89,11 +88,11 @@ void expect_settled(const std::string& scene, int dim, double d0, double end_tim
 }
 
 // 2D: ten seconds, by when the heave has died down to a millimetre, and the mean over the last
-// two against the accuracy issue's target, 2 % of D. Measured +0.21 % and +0.65 % with the
-// pressure gradient normalised by each particle's neighbours; +2.9 % at d0 = 0.01 m with the
-// lattice normalisation alone, where the settled water's pressure was 3 % low (docs/method.md,
-// seventeenth session). (The time mean of the first three seconds depends on the heave's phase
-// in the window: 1.3 % and 4.8 % over 0.5-1.5 s.)
+// two against the accuracy issue's target, 2 % of D. Measured +0.24 % and +0.20 % with the
+// pressure gradient normalised by each particle's neighbours (height spread ratios 0.03 and 0.02);
+// +2.9 % at d0 = 0.01 m with the lattice normalisation alone, where the settled water's pressure
+// was 3 % low (docs/method.md, seventeenth session). (The time mean of the first three seconds
+// depends on the heave's phase in the window: 1.3 % and 4.8 % over 0.5-1.5 s.)
 TEST(FloatingBoxLong, SettlesAtTheArchimedesDraft2D) {
   for (double d0 : {0.01, 0.005})
     expect_settled("floating_box_2d.lua", 2, d0, 10.0, 2.0, 0.7, 0.02 * 0.05);
