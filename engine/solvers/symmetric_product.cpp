@@ -1,0 +1,135 @@
+#include "engine/solvers/symmetric_product.hpp"
+
+#include <algorithm>
+
+namespace washout {
+namespace {
+
+// Blocks of at least 1,024 rows and at most 64 of them: enough for the threads of a workstation,
+// few enough that the buffers' reach beyond them (a band each) stays a small share of the matrix.
+constexpr std::size_t kMinBlockRows = 1024, kMaxBlocks = 64;
+// As for the full rows (sparse_matrix.cpp): below this a product is not worth forking for.
+constexpr std::size_t kParallelNonzeros = 100000;
+
+}  // namespace
+
+void SymmetricProduct::clear() {
+  rows_ = block_rows_ = blocks_ = 0;
+  diagonal_.clear();
+  start_.clear();
+  column_.clear();
+  value_.clear();
+  buffer_start_.clear();
+  buffer_.clear();
+}
+
+bool SymmetricProduct::build(const CsrMatrix& A) {
+  clear();
+  const std::size_t n = A.rows;
+  if (n == 0) return false;
+  const std::size_t block_rows = std::max(kMinBlockRows, (n + kMaxBlocks - 1) / kMaxBlocks);
+  const std::size_t blocks = (n + block_rows - 1) / block_rows;
+  const bool parallel = A.nonzeros() > kParallelNonzeros;
+
+  diagonal_.assign(n, 0.0);
+  start_.assign(n + 1, 0);
+#pragma omp parallel for schedule(static) if (parallel)
+  for (std::size_t i = 0; i < n; ++i) {
+    std::int64_t upper = 0;
+    for (std::int64_t k = A.row_start[i]; k < A.row_start[i + 1]; ++k) {
+      const auto j = static_cast<std::size_t>(A.column[k]);
+      if (j == i) diagonal_[i] += A.value[k];
+      upper += j > i;
+    }
+    start_[i + 1] = upper;
+  }
+  for (std::size_t i = 0; i < n; ++i) start_[i + 1] += start_[i];
+
+  // Each block's reach: the furthest column its rows scatter to. Its buffer spans its own rows
+  // and those up to its reach.
+  buffer_start_.assign(blocks + 1, 0);
+#pragma omp parallel for schedule(static) if (parallel)
+  for (std::size_t b = 0; b < blocks; ++b) {
+    const std::size_t end = std::min(n, (b + 1) * block_rows);
+    std::size_t reach = end;
+    for (std::size_t i = b * block_rows; i < end; ++i)
+      for (std::int64_t k = A.row_start[i]; k < A.row_start[i + 1]; ++k)
+        reach = std::max(reach, static_cast<std::size_t>(A.column[k]) + 1);
+    buffer_start_[b + 1] = static_cast<std::int64_t>(reach - b * block_rows);
+  }
+  for (std::size_t b = 0; b < blocks; ++b) buffer_start_[b + 1] += buffer_start_[b];
+  const auto upper = static_cast<std::size_t>(start_[n]);
+  if (4 * (static_cast<std::size_t>(buffer_start_[blocks]) - n) > upper) {
+    clear();
+    return false;
+  }
+
+  column_.resize(upper);
+  value_.resize(upper);
+#pragma omp parallel for schedule(static) if (parallel)
+  for (std::size_t i = 0; i < n; ++i) {
+    std::int64_t slot = start_[i];
+    for (std::int64_t k = A.row_start[i]; k < A.row_start[i + 1]; ++k)
+      if (static_cast<std::size_t>(A.column[k]) > i) {
+        column_[slot] = A.column[k];
+        value_[slot++] = A.value[k];
+      }
+  }
+  buffer_.assign(static_cast<std::size_t>(buffer_start_[blocks]), 0.0);
+  rows_ = n;
+  block_rows_ = block_rows;
+  blocks_ = blocks;
+  parallel_ = parallel;
+  return true;
+}
+
+void SymmetricProduct::multiply(const std::vector<double>& x, std::vector<double>& y) {
+  const std::size_t n = rows_;
+  y.resize(n);
+#pragma omp parallel if (parallel_)
+  {
+    // Each block on its own, into its buffer: its rows' gathers, and the scatters into its own
+    // rows and beyond them (one store per entry, no test of where it lands).
+#pragma omp for schedule(static)
+    for (std::size_t b = 0; b < blocks_; ++b) {
+      const std::size_t begin = b * block_rows_, end = std::min(n, begin + block_rows_);
+      const std::int64_t base = buffer_start_[b] - static_cast<std::int64_t>(begin);
+      double* buffer = buffer_.data();
+      std::fill(buffer + buffer_start_[b], buffer + buffer_start_[b + 1], 0.0);
+      for (std::size_t i = begin; i < end; ++i) {
+        const double x_i = x[i];
+        double sum = buffer[base + static_cast<std::int64_t>(i)] + diagonal_[i] * x_i;
+        for (std::int64_t k = start_[i]; k < start_[i + 1]; ++k) {
+          const std::int32_t j = column_[k];
+          sum += value_[k] * x[j];
+          buffer[base + j] += value_[k] * x_i;
+        }
+        y[i] = sum;
+      }
+    }
+    // The scatters beyond each block added to the rows they reach, each row taking them in
+    // block order.
+#pragma omp for schedule(static)
+    for (std::size_t c = 1; c < blocks_; ++c) {
+      const std::size_t begin = c * block_rows_, end = std::min(n, begin + block_rows_);
+      for (std::size_t b = 0; b < c; ++b) {
+        const std::size_t from = b * block_rows_;  // the first row of b's buffer
+        const std::size_t reach =
+            from + static_cast<std::size_t>(buffer_start_[b + 1] - buffer_start_[b]);
+        const double* buffer = buffer_.data() + buffer_start_[b];
+        for (std::size_t j = begin; j < std::min(end, reach); ++j) y[j] += buffer[j - from];
+      }
+    }
+  }
+}
+
+double SymmetricProduct::product_bytes() const {
+  const double n = double(rows_);
+  // Upper entries and their columns once, row starts and the diagonal once, x read and y
+  // written once, each buffer entry cleared and read back once.
+  return double(value_.size()) * (sizeof(double) + sizeof(std::int32_t)) +
+         (n + 1) * sizeof(std::int64_t) + 3.0 * n * sizeof(double) +
+         2.0 * double(buffer_.size()) * sizeof(double);
+}
+
+}  // namespace washout
