@@ -20,6 +20,9 @@ class Preconditioner {
   // After the first solve with a new matrix: the iterations it took (a preconditioner that has
   // gone stale can tell). Not called for solve_again: other right-hand sides, other tolerances.
   virtual void solved(int /*iterations*/) {}
+  // A diagonal preconditioner's M^-1 (after prepare), which the CG loop then applies within its
+  // own pass over the vectors; null for any other.
+  virtual const std::vector<double>* inverse_diagonal() const { return nullptr; }
 };
 
 std::unique_ptr<Preconditioner> make_jacobi_preconditioner();
