@@ -23,8 +23,8 @@ namespace washout {
 class SymmetricProduct {
  public:
   // Takes A's diagonal and upper triangle (A must be symmetric: its lower triangle is not read).
-  // False, holding nothing, where the buffers' reach beyond their blocks would exceed a quarter
-  // of the upper entries.
+  // False, holding nothing, where the buffers' reach beyond their blocks would exceed half the
+  // upper entries.
   bool build(const CsrMatrix& A);
   bool ready() const { return rows_ > 0; }
   void clear();
