@@ -26,18 +26,20 @@ double seconds_since(std::chrono::steady_clock::time_point start) {
   return std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
 }
 
-// Both sums a.b and a.c in one pass, each over the same fixed blocks.
-std::pair<double, double> dots(const std::vector<double>& a, const std::vector<double>& b,
-                               const std::vector<double>& c) {
-  const std::size_t n = a.size(), blocks = (n + kBlock - 1) / kBlock;
+// Two sums over [0, n), taken in fixed blocks so that they do not depend on the threads:
+// terms(i) gives the i-th term of each (and may update the vectors at i on the way).
+template <class Terms>
+std::pair<double, double> blocked_sums(std::size_t n, Terms&& terms) {
+  const std::size_t blocks = (n + kBlock - 1) / kBlock;
   std::vector<double> partial_b(blocks, 0.0), partial_c(blocks, 0.0);
 #pragma omp parallel for schedule(static) if (n > kParallelRows)
   for (std::size_t k = 0; k < blocks; ++k) {
     double sb = 0.0, sc = 0.0;
     const std::size_t end = std::min(n, (k + 1) * kBlock);
     for (std::size_t i = k * kBlock; i < end; ++i) {
-      sb += a[i] * b[i];
-      sc += a[i] * c[i];
+      const auto [tb, tc] = terms(i);
+      sb += tb;
+      sc += tc;
     }
     partial_b[k] = sb;
     partial_c[k] = sc;
@@ -48,6 +50,14 @@ std::pair<double, double> dots(const std::vector<double>& a, const std::vector<d
     sc += partial_c[k];
   }
   return {sb, sc};
+}
+
+// Both sums a.b and a.c in one pass.
+std::pair<double, double> dots(const std::vector<double>& a, const std::vector<double>& b,
+                               const std::vector<double>& c) {
+  return blocked_sums(a.size(), [&](std::size_t i) {
+    return std::pair<double, double>{a[i] * b[i], a[i] * c[i]};
+  });
 }
 
 double dot(const std::vector<double>& a, const std::vector<double>& b) {
@@ -145,30 +155,13 @@ class PcgSolver final : public LinearSolver {
       return dots(r_, z_, r_);
     }
     const double* inverse = diagonal->data();
-    const std::size_t blocks = (n + kBlock - 1) / kBlock;
-    partial_rz_.assign(blocks, 0.0);
-    partial_rr_.assign(blocks, 0.0);
     z_.resize(n);
-#pragma omp parallel for schedule(static) if (n > kParallelRows)
-    for (std::size_t k = 0; k < blocks; ++k) {
-      double rz = 0.0, rr = 0.0;
-      const std::size_t end = std::min(n, (k + 1) * kBlock);
-      for (std::size_t i = k * kBlock; i < end; ++i) {
-        x[i] += step * p_[i];
-        r_[i] -= step * q_[i];
-        z_[i] = inverse[i] * r_[i];
-        rz += r_[i] * z_[i];
-        rr += r_[i] * r_[i];
-      }
-      partial_rz_[k] = rz;
-      partial_rr_[k] = rr;
-    }
-    double rz = 0.0, rr = 0.0;
-    for (std::size_t k = 0; k < blocks; ++k) {
-      rz += partial_rz_[k];
-      rr += partial_rr_[k];
-    }
-    return {rz, rr};
+    return blocked_sums(n, [&](std::size_t i) {
+      x[i] += step * p_[i];
+      r_[i] -= step * q_[i];
+      z_[i] = inverse[i] * r_[i];
+      return std::pair<double, double>{r_[i] * z_[i], r_[i] * r_[i]};
+    });
   }
 
   SolveReport iterate(const CsrMatrix& A, const std::vector<double>& b, std::vector<double>& x,
@@ -220,7 +213,6 @@ class PcgSolver final : public LinearSolver {
   double tolerance_;
   int max_iterations_;
   std::vector<double> r_, z_, p_, q_;
-  std::vector<double> partial_rz_, partial_rr_;
   SymmetricProduct symmetric_;
   bool product_taken_ = false;
 };
