@@ -1,8 +1,8 @@
 #pragma once
 // y = A x for the symmetric pressure matrix, stored once: its diagonal and its upper triangle.
 // Half the bytes of the full rows, and the product is bound by the bytes it moves (the 3D
-// same-case dam break at a/20: 0.39 M non-zeros, 373 us a product on one thread in full rows,
-// 168 us from the upper triangle).
+// same-case dam break at a/20: 0.39 M non-zeros, 262-284 us a product on one thread in full
+// rows, 149-161 us from the upper triangle; docs/performance.md, eighteenth session).
 //
 // Row i gathers its upper entries, sum_{j>i} a_ij x_j, and scatters their transposes,
 // y_j += a_ij x_i. For threads, the rows are cut into fixed blocks (their size set by the
