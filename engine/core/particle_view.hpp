@@ -8,8 +8,8 @@
 
 namespace washout {
 
-// Retired: a fluid particle that left the domain (spray thrown over a wall). It keeps its index
-// (fluid indices stay stable ids) and its last place, and takes no further part: the neighbour
+// Retired: a fluid particle that left the domain (spray thrown over a wall). It keeps its id
+// and its last place, and takes no further part: the neighbour
 // grid leaves it out, it does not move (docs/stability.md, the domain guard).
 enum class ParticleKind : std::uint8_t {
   Fluid = 0,
@@ -37,6 +37,10 @@ struct ParticleView {
   const double* pressure = nullptr;    // [count] Pa, may be null
   const std::uint8_t* kind = nullptr;  // [count] ParticleKind values
   const std::int32_t* body = nullptr;  // [count] body index for kind 3, else -1; may be null
+  // [count] the stable id of the particle at each index, a permutation of 0 .. count-1 (the
+  // run keeps its fluid in cell order: particle_order.hpp); null: the index is the id. Frames
+  // list the particles by id.
+  const std::uint64_t* id = nullptr;
 };
 
 }  // namespace washout

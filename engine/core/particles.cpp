@@ -38,6 +38,7 @@ ParticleView Particles::view(double time, double d0) const {
   v.pressure = pressure.data();
   v.kind = kind.data();
   v.body = body.data();
+  v.id = id.data();
   return v;
 }
 

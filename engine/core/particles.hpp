@@ -1,7 +1,9 @@
 #pragma once
 // Particle storage as a structure of arrays: one contiguous array per quantity.
 // Fluid particles occupy [0, fluid_count); boundary particles (walls, bodies) follow.
-// The order never changes during a run, so an index is also a stable particle id.
+// The boundary's order never changes during a run; the fluid's is sorted by cell every
+// reorder_interval steps (particle_order.hpp), so a particle's stable id is `id`, its index at
+// t = 0.
 #include <array>
 #include <cstddef>
 #include <cstdint>

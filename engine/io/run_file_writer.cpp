@@ -8,6 +8,7 @@
 #include <filesystem>
 #include <fstream>
 #include <sstream>
+#include <type_traits>
 
 namespace washout::io {
 namespace {
@@ -289,23 +290,28 @@ void RunFileWriter::write_frame(const ParticleView& view, std::int64_t step,
       if (x == f) return true;
     return false;
   };
+  // Row id of the particle at index i: the frames list particles by id, whatever order the run
+  // keeps them in.
+  auto row = [&](std::size_t i) { return view.id ? static_cast<std::size_t>(view.id[i]) : i; };
   auto vector_block = [&](const VectorView& v) {
     std::vector<double> block(n * dim_);
     for (std::size_t i = 0; i < n; ++i)
-      for (int a = 0; a < dim_; ++a) block[i * dim_ + a] = v(i, a);
+      for (int a = 0; a < dim_; ++a) block[row(i) * dim_ + a] = v(i, a);
     return block;
+  };
+  auto by_row = [&](const auto* values) {
+    std::vector<std::remove_const_t<std::remove_pointer_t<decltype(values)>>> rows(n);
+    for (std::size_t i = 0; i < n; ++i) rows[row(i)] = values[i];
+    return rows;
   };
   write_dataset(group, "position", H5T_NATIVE_DOUBLE, vector_block(view.position), n, dim_);
   const bool velocity = wants("velocity") && view.velocity.component[0];
   const bool pressure = wants("pressure") && view.pressure;
   if (velocity)
     write_dataset(group, "velocity", H5T_NATIVE_DOUBLE, vector_block(view.velocity), n, dim_);
-  if (pressure)
-    write_dataset(group, "pressure", H5T_NATIVE_DOUBLE,
-                  std::vector<double>(view.pressure, view.pressure + n), n, 1);
+  if (pressure) write_dataset(group, "pressure", H5T_NATIVE_DOUBLE, by_row(view.pressure), n, 1);
   if (view.kind)  // kind is always written: readers need it to tell fluid from walls
-    write_dataset(group, "kind", H5T_NATIVE_UINT8,
-                  std::vector<std::uint8_t>(view.kind, view.kind + n), n, 1);
+    write_dataset(group, "kind", H5T_NATIVE_UINT8, by_row(view.kind), n, 1);
   if (wants("id")) {
     std::vector<std::uint64_t> ids(n);
     for (std::size_t i = 0; i < n; ++i) ids[i] = i;
@@ -313,7 +319,7 @@ void RunFileWriter::write_frame(const ParticleView& view, std::int64_t step,
   }
   if (wants("body")) {
     std::vector<std::int32_t> body(n, -1);
-    if (view.body) body.assign(view.body, view.body + n);
+    if (view.body) body = by_row(view.body);
     write_dataset(group, "body", H5T_NATIVE_INT32, body, n, 1);
   }
   H5Gclose(group);

@@ -198,6 +198,11 @@ const std::vector<ParameterInfo>& ParameterSet::engine_table() {
       {"domain_max", "m", "upper corner of the domain", Vec{}},
       {"threads", "-", "OpenMP threads; 0 = all cores (the CLI's --threads wins)",
        double(d.threads)},
+      {"reorder_interval", "-",
+       "steps between sorts of the fluid particles by cell in memory, so that neighbours in "
+       "space stay neighbours in the arrays as the flow mixes them (docs/performance.md); the "
+       "frames list particles by id whatever the order; 0 = never",
+       double(d.reorder_interval)},
       {"max_particles", "-",
        "a scene whose particle count, estimated from its shapes before anything is allocated, "
        "exceeds this is refused (exit 1), so a mistyped d0 cannot exhaust the machine's memory",
@@ -452,6 +457,7 @@ SimulationParameters SimulationParameters::from(const ParameterSet& set) {
   if (!p.periodic.empty() && (p.domain_min.empty() || p.domain_max.empty()))
     throw ParameterError("periodic", "periodic axes need domain_min and domain_max");
   p.threads = integer("threads", non_negative("threads"));
+  p.reorder_interval = integer("reorder_interval", non_negative("reorder_interval"));
   p.max_particles = positive("max_particles");
   return p;
 }

@@ -124,6 +124,8 @@ struct SimulationParameters {
   std::string periodic;        // axes, e.g. "x"
   std::vector<double> domain_min, domain_max;
   int threads = 0;
+  // Steps between sorts of the fluid by cell in memory (particle_order.hpp); 0: never.
+  int reorder_interval = 50;
   double max_particles = 5e7;  // refused above this estimate before allocating
 
   double h() const { return h_over_d0 * d0; }

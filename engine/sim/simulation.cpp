@@ -155,6 +155,7 @@ Simulation::Simulation(Model model)
   features.gradient_scale = prm.gradient_scale == "particle";
   features.moving_walls = !moving_walls_.empty();
   features.probes = !model_.probes.empty();
+  features.reorder = prm.reorder_interval > 0;
   plan_ = compose_step(features);
   layout_fingerprint_ = compute_layout_fingerprint();
 }
@@ -249,6 +250,9 @@ void Simulation::run_stage(Stage stage, StepInProgress& now) {
   const double dt = now.dt;
   StepReport& report = now.report;
   switch (stage) {
+    case Stage::reorder:
+      if (step_ % prm.reorder_interval == 0) reorder_fluid();
+      return;
     case Stage::neighbours:
       grid_.build(particles_, 2.0 * ctx_.h, ctx_.periodic);
       grid_.build_list(particles_, particles_.fluid_count, 2.0 * ctx_.h, neighbors_);
@@ -416,11 +420,11 @@ void Simulation::check_health(StepReport& report) {
   report.kinetic_energy = energy;
   std::ostringstream where;
   if (bad_value < n) {
-    where << "particle " << bad_value << " has a non-finite velocity or position";
+    where << "particle " << particles_.id[bad_value] << " has a non-finite velocity or position";
     throw UnstableError(where.str());
   }
   if (too_fast < n) {
-    where << "runaway velocity: particle " << too_fast << " at "
+    where << "runaway velocity: particle " << particles_.id[too_fast] << " at "
           << format_point(particles_, too_fast) << " moves at "
           << std::sqrt(std::pow(particles_.velocity[0][too_fast], 2) +
                        std::pow(particles_.velocity[1][too_fast], 2) +
@@ -452,7 +456,8 @@ void Simulation::retire_escaped_fluid(std::size_t first, std::size_t count, Step
   const double allowed = std::floor(limit * static_cast<double>(n));
   if (static_cast<double>(retired_.size() + count) > allowed) {
     std::ostringstream m;
-    m << "particle " << first << " left the domain at " << format_point(particles_, first);
+    m << "particle " << particles_.id[first] << " left the domain at "
+      << format_point(particles_, first);
     if (count > 1) m << " (with " << count - 1 << " more this step)";
     if (!retired_.empty()) m << ", after " << retired_.size() << " retired before";
     m << ": more than escape_limit = " << limit << " of the " << n
@@ -480,7 +485,7 @@ bool Simulation::inside_domain(const Vec3& x) const {
 std::string Simulation::describe_first_retirement() const {
   if (retired_.empty()) return "";
   std::ostringstream m;
-  m << "particle " << retired_.front() << " left the domain at "
+  m << "particle " << particles_.id[retired_.front()] << " left the domain at "
     << format_point(particles_, retired_.front()) << ", t = " << first_retirement_.time
     << " s (step " << first_retirement_.step << ")";
   return m.str();

@@ -11,6 +11,7 @@
 
 #include "engine/boundary/moving_walls.hpp"
 #include "engine/core/neighbor_grid.hpp"
+#include "engine/core/particle_order.hpp"
 #include "engine/core/sph_context.hpp"
 #include "engine/fluid/fluid_work.hpp"
 #include "engine/fluid/isph_stages.hpp"
@@ -120,6 +121,7 @@ class Simulation {
   const SphContext& context() const { return ctx_; }
   double time() const { return time_; }
   long step_count() const { return step_; }
+  // The particles in the order the run keeps them (reorder_interval), each with its id.
   ParticleView view() const { return particles_.view(time_, model_.params.d0); }
   const StageTimer& timer() const { return timer_; }
   const std::vector<double>& probe_values() const { return probe_values_; }
@@ -192,6 +194,10 @@ class Simulation {
                                       Visit&& visit) const;
   void evaluate_probes();
   std::uint64_t compute_layout_fingerprint() const;
+  // The fluid sorted by cell again (the reorder stage), and any order applied to the particles
+  // and to everything held for them from step to step (fluid_reorder.cpp).
+  void reorder_fluid();
+  void apply_fluid_order(const FluidOrder& order);
 
   Model model_;
   Particles particles_;
@@ -212,6 +218,7 @@ class Simulation {
   std::vector<std::uint8_t> trapped_;     // fluid to move to a free place this step
   std::vector<std::uint32_t> relocated_;  // of those, the ones moved out so far this step
   std::vector<double> shift_scratch_;
+  bool fluid_reordered_ = false;  // some fluid particle is not at the index of its id
   StageTimer timer_;
   // The step composed from the scene (step_plan.hpp) and the modes it runs in.
   std::vector<Stage> plan_;

@@ -7,6 +7,8 @@
 #include <omp.h>
 
 #include <cstring>
+#include <numeric>
+#include <stdexcept>
 
 #include "engine/io/checkpoint.hpp"
 #include "engine/sim/rigid_body_system.hpp"
@@ -73,6 +75,10 @@ void Simulation::save_state(io::Checkpoint& c) const {
     c.numbers["first_retirement_time"] = first_retirement_.time;
     c.counts["first_retirement_step"] = first_retirement_.step;
   }
+  // The fluid's order in the arrays (reorder_interval): every array below is in it. Absent
+  // while the fluid is at the indices it was built at.
+  if (fluid_reordered_)
+    c.integers["fluid_order"].assign(p.id.begin(), p.id.begin() + p.fluid_count);
   put_components(c, "position", p.position);
   put_components(c, "velocity", p.velocity);
   put_components(c, "normal", p.normal);  // bodies' normals turn with them
@@ -113,6 +119,25 @@ void Simulation::restore_state(const io::Checkpoint& c) {
     throw io::CheckpointError(
         "the scene builds its particles in other places than the checkpoint's run did (the same "
         "scene text and parameters, so a module it requires or the engine changed since)");
+  // The fluid in the order the checkpoint's arrays hold it, before they are read.
+  std::vector<std::uint64_t> ids(p.fluid_count);
+  if (c.integers.count("fluid_order")) {
+    const std::vector<std::int64_t>& saved = c.integer("fluid_order");
+    if (saved.size() != ids.size())
+      throw io::CheckpointError("the checkpoint's fluid_order does not name every fluid particle");
+    for (std::size_t k = 0; k < ids.size(); ++k) {
+      if (saved[k] < 0)
+        throw io::CheckpointError("the checkpoint's fluid_order holds a negative id");
+      ids[k] = static_cast<std::uint64_t>(saved[k]);
+    }
+  } else {
+    std::iota(ids.begin(), ids.end(), std::uint64_t{0});
+  }
+  try {
+    apply_fluid_order(order_of_ids(p, ids));
+  } catch (const std::invalid_argument& e) {
+    throw io::CheckpointError(std::string("the checkpoint's fluid_order: ") + e.what());
+  }
   step_ = static_cast<long>(c.count("step"));
   wall_crossings_ = static_cast<long>(c.count("wall_crossings"));
   gap_relocations_ = static_cast<long>(c.count("gap_relocations"));

@@ -4,6 +4,8 @@ namespace washout {
 
 const char* stage_name(Stage stage) {
   switch (stage) {
+    case Stage::reorder:
+      return "reorder";
     case Stage::neighbours:
       return "neighbours";
     case Stage::density:
@@ -59,7 +61,9 @@ const char* stage_name(Stage stage) {
 }
 
 std::vector<Stage> compose_step(const SceneFeatures& f) {
-  std::vector<Stage> plan{Stage::neighbours, Stage::density};
+  std::vector<Stage> plan;
+  if (f.reorder) plan.push_back(Stage::reorder);
+  plan.insert(plan.end(), {Stage::neighbours, Stage::density});
   if (f.gradient_scale) plan.push_back(Stage::gradient_scale);  // needs the surface, for the PPE
   plan.push_back(Stage::wall_markers);
   if (f.bodies && f.dynamic_wall) plan.push_back(Stage::squeeze_film);

@@ -9,6 +9,7 @@
 namespace washout {
 
 enum class Stage : std::uint8_t {
+  reorder,             // the fluid sorted by cell in memory, every reorder_interval steps
   neighbours,          // cell linked list and neighbour lists (METHOD.md "Neighbour search")
   density,             // summation density and free-surface detection
   gradient_scale,      // the pressure gradient's normalisation by each particle's neighbours
@@ -52,6 +53,7 @@ struct SceneFeatures {
   bool gradient_scale = false;     // the pressure gradient normalised by each particle's support
   bool moving_walls = false;       // a wall with a prescribed motion
   bool probes = false;             // any probe
+  bool reorder = false;            // the fluid sorted by cell every reorder_interval steps
 };
 
 std::vector<Stage> compose_step(const SceneFeatures& features);

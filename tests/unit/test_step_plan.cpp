@@ -32,6 +32,17 @@ TEST(StepPlan, StillTankRunsOnlyTheFluidStages) {
       "checks push_out");
 }
 
+// The fluid is sorted in memory before anything builds lists over it, never mid-step.
+TEST(StepPlan, TheFluidIsSortedFirst) {
+  SceneFeatures f;
+  f.reorder = true;
+  const auto plan = compose_step(f);
+  ASSERT_GE(plan.size(), 2u);
+  EXPECT_EQ(plan[0], Stage::reorder);
+  EXPECT_EQ(plan[1], Stage::neighbours);
+  EXPECT_EQ(std::count(plan.begin(), plan.end(), Stage::reorder), 1);
+}
+
 TEST(StepPlan, BodiesBringTheirStagesAndNothingElse) {
   SceneFeatures f;
   f.bodies = f.dynamic_wall = true;
