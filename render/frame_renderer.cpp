@@ -1,8 +1,6 @@
 #include "render/frame_renderer.hpp"
 
 #define GL_GLEXT_PROTOTYPES
-#include <GL/gl.h>
-
 #include <algorithm>
 #include <cmath>
 #include <string>
@@ -12,6 +10,7 @@
 #include "render/camera_fit.hpp"
 #include "render/color_map.hpp"
 #include "render/downsample.hpp"
+#include "render/gl_api.hpp"
 #include "render/occlusion_culling.hpp"
 #include "render/osmesa_context.hpp"
 #include "render/overlay.hpp"
@@ -144,16 +143,16 @@ struct FrameRenderer::State {
     ensure_context();
     const int s = options.supersample;
     const PixelRect& plot = layout.plot;
-    glViewport(plot.x * s, (options.height - plot.y - plot.height) * s, plot.width * s,
-               plot.height * s);
-    glClearColor(kBackgroundColor.r / 255.0f, kBackgroundColor.g / 255.0f,
-                 kBackgroundColor.b / 255.0f, 1.0f);
-    glClearDepth(1.0);
-    glClear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT);
-    glEnable(GL_DEPTH_TEST);
-    glDepthFunc(GL_LESS);
+    gl().glViewport(plot.x * s, (options.height - plot.y - plot.height) * s, plot.width * s,
+                    plot.height * s);
+    gl().glClearColor(kBackgroundColor.r / 255.0f, kBackgroundColor.g / 255.0f,
+                      kBackgroundColor.b / 255.0f, 1.0f);
+    gl().glClearDepth(1.0);
+    gl().glClear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT);
+    gl().glEnable(GL_DEPTH_TEST);
+    gl().glDepthFunc(GL_LESS);
     spheres->draw(instances, *camera, radius);
-    glFinish();
+    gl().glFinish();
   }
 };
 

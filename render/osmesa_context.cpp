@@ -1,9 +1,8 @@
 #include "render/osmesa_context.hpp"
 
-#include <GL/osmesa.h>
-
 #include <string>
 
+#include "render/gl_api.hpp"
 #include "render/render_error.hpp"
 
 namespace washout::render {
@@ -27,7 +26,7 @@ OsmesaContext::OsmesaContext(int width, int height)
                             OSMESA_CONTEXT_MINOR_VERSION,
                             3,
                             0};
-  context_ = OSMesaCreateContextAttribs(attributes, nullptr);
+  context_ = gl().OSMesaCreateContextAttribs(attributes, nullptr);
   if (!context_) {
     throw ContextError(
         "cannot create an OSMesa OpenGL 3.3 context (is libOSMesa with llvmpipe installed?)");
@@ -36,12 +35,12 @@ OsmesaContext::OsmesaContext(int width, int height)
 }
 
 OsmesaContext::~OsmesaContext() {
-  if (context_) OSMesaDestroyContext(static_cast<OSMesaContext>(context_));
+  if (context_) gl().OSMesaDestroyContext(static_cast<OSMesaContext>(context_));
 }
 
 void OsmesaContext::make_current() {
-  if (!OSMesaMakeCurrent(static_cast<OSMesaContext>(context_), buffer_.data(), GL_UNSIGNED_BYTE,
-                         width_, height_)) {
+  if (!gl().OSMesaMakeCurrent(static_cast<OSMesaContext>(context_), buffer_.data(),
+                              GL_UNSIGNED_BYTE, width_, height_)) {
     throw ContextError("cannot make the OSMesa context current for a " + std::to_string(width_) +
                        "x" + std::to_string(height_) + " buffer");
   }

@@ -1,14 +1,11 @@
 #include "render/sphere_impostor_pass.hpp"
 
-#define GL_GLEXT_PROTOTYPES
-#include <GL/gl.h>
-#include <GL/glext.h>
-
 #include <Eigen/Core>
 #include <algorithm>
 #include <cstddef>
 #include <string>
 
+#include "render/gl_api.hpp"
 #include "render/render_error.hpp"
 #include "render/sphere_shading.hpp"
 
@@ -98,18 +95,18 @@ void main() {
 )";
 
 unsigned compile(GLenum stage, const char* source, bool perspective) {
-  const GLuint shader = glCreateShader(stage);
+  const GLuint shader = gl().glCreateShader(stage);
   const char* parts[] = {"#version 330 core\n",
                          perspective ? "#define PERSPECTIVE 1\n" : "#define PERSPECTIVE 0\n",
                          source};
-  glShaderSource(shader, 3, parts, nullptr);
-  glCompileShader(shader);
+  gl().glShaderSource(shader, 3, parts, nullptr);
+  gl().glCompileShader(shader);
   GLint ok = GL_FALSE;
-  glGetShaderiv(shader, GL_COMPILE_STATUS, &ok);
+  gl().glGetShaderiv(shader, GL_COMPILE_STATUS, &ok);
   if (!ok) {
     char log[2048] = {0};
-    glGetShaderInfoLog(shader, sizeof(log), nullptr, log);
-    glDeleteShader(shader);
+    gl().glGetShaderInfoLog(shader, sizeof(log), nullptr, log);
+    gl().glDeleteShader(shader);
     throw ContextError(std::string("sphere shader does not compile: ") + log);
   }
   return shader;
@@ -117,38 +114,39 @@ unsigned compile(GLenum stage, const char* source, bool perspective) {
 
 void set_matrix(int location, const Eigen::Matrix4d& m) {
   const Eigen::Matrix4f f = m.cast<float>();  // Eigen is column-major, as OpenGL expects
-  glUniformMatrix4fv(location, 1, GL_FALSE, f.data());
+  gl().glUniformMatrix4fv(location, 1, GL_FALSE, f.data());
 }
 
 // Compiles and links one variant; the uniforms that never change are set here.
 unsigned link_program(bool perspective) {
   const GLuint vs = compile(GL_VERTEX_SHADER, kVertexShader, perspective);
   const GLuint fs = compile(GL_FRAGMENT_SHADER, kFragmentShader, perspective);
-  const GLuint program = glCreateProgram();
-  glAttachShader(program, vs);
-  glAttachShader(program, fs);
-  glLinkProgram(program);
-  glDeleteShader(vs);
-  glDeleteShader(fs);
+  const GLuint program = gl().glCreateProgram();
+  gl().glAttachShader(program, vs);
+  gl().glAttachShader(program, fs);
+  gl().glLinkProgram(program);
+  gl().glDeleteShader(vs);
+  gl().glDeleteShader(fs);
   GLint ok = GL_FALSE;
-  glGetProgramiv(program, GL_LINK_STATUS, &ok);
+  gl().glGetProgramiv(program, GL_LINK_STATUS, &ok);
   if (!ok) {
     char log[2048] = {0};
-    glGetProgramInfoLog(program, sizeof(log), nullptr, log);
-    glDeleteProgram(program);
+    gl().glGetProgramInfoLog(program, sizeof(log), nullptr, log);
+    gl().glDeleteProgram(program);
     throw ContextError(std::string("sphere shaders do not link: ") + log);
   }
-  glUseProgram(program);
-  glUniform1i(glGetUniformLocation(program, "spheres"), 0);
+  gl().glUseProgram(program);
+  gl().glUniform1i(gl().glGetUniformLocation(program, "spheres"), 0);
   const SphereShading& s = kSphereShading;
   const Eigen::Vector3f light =
       Eigen::Vector3d(s.light_direction[0], s.light_direction[1], s.light_direction[2])
           .normalized()
           .cast<float>();
-  glUniform3f(glGetUniformLocation(program, "light_direction"), light.x(), light.y(), light.z());
-  glUniform1f(glGetUniformLocation(program, "ambient"), static_cast<float>(s.ambient));
-  glUniform1f(glGetUniformLocation(program, "diffuse"), static_cast<float>(s.diffuse));
-  glUniform1f(glGetUniformLocation(program, "specular"), static_cast<float>(s.specular));
+  gl().glUniform3f(gl().glGetUniformLocation(program, "light_direction"), light.x(), light.y(),
+                   light.z());
+  gl().glUniform1f(gl().glGetUniformLocation(program, "ambient"), static_cast<float>(s.ambient));
+  gl().glUniform1f(gl().glGetUniformLocation(program, "diffuse"), static_cast<float>(s.diffuse));
+  gl().glUniform1f(gl().glGetUniformLocation(program, "specular"), static_cast<float>(s.specular));
   return program;
 }
 
@@ -158,39 +156,39 @@ SphereImpostorPass::SphereImpostorPass() {
   orthographic_program_ = link_program(false);
   perspective_program_ = link_program(true);
   // No vertex attributes: everything comes from the buffer texture.
-  glGenVertexArrays(1, &vertex_array_);
-  glGenBuffers(1, &instance_buffer_);
-  glGenTextures(1, &instance_texture_);
-  glBindBuffer(GL_TEXTURE_BUFFER, instance_buffer_);
-  glBindTexture(GL_TEXTURE_BUFFER, instance_texture_);
-  glTexBuffer(GL_TEXTURE_BUFFER, GL_RGBA32UI, instance_buffer_);
-  glGetIntegerv(GL_MAX_TEXTURE_BUFFER_SIZE, &max_spheres_);
+  gl().glGenVertexArrays(1, &vertex_array_);
+  gl().glGenBuffers(1, &instance_buffer_);
+  gl().glGenTextures(1, &instance_texture_);
+  gl().glBindBuffer(GL_TEXTURE_BUFFER, instance_buffer_);
+  gl().glBindTexture(GL_TEXTURE_BUFFER, instance_texture_);
+  gl().glTexBuffer(GL_TEXTURE_BUFFER, GL_RGBA32UI, instance_buffer_);
+  gl().glGetIntegerv(GL_MAX_TEXTURE_BUFFER_SIZE, &max_spheres_);
 }
 
 SphereImpostorPass::~SphereImpostorPass() {
-  glDeleteTextures(1, &instance_texture_);
-  glDeleteBuffers(1, &instance_buffer_);
-  glDeleteVertexArrays(1, &vertex_array_);
-  glDeleteProgram(orthographic_program_);
-  glDeleteProgram(perspective_program_);
+  gl().glDeleteTextures(1, &instance_texture_);
+  gl().glDeleteBuffers(1, &instance_buffer_);
+  gl().glDeleteVertexArrays(1, &vertex_array_);
+  gl().glDeleteProgram(orthographic_program_);
+  gl().glDeleteProgram(perspective_program_);
 }
 
 void SphereImpostorPass::draw(const std::vector<SphereInstance>& spheres, const Camera& camera,
                               double radius) {
   if (spheres.empty()) return;
   const GLuint program = camera.is_orthographic() ? orthographic_program_ : perspective_program_;
-  glUseProgram(program);
+  gl().glUseProgram(program);
   const Eigen::Matrix4d projection = camera.projection_matrix();
-  set_matrix(glGetUniformLocation(program, "view"), camera.view_matrix());
-  set_matrix(glGetUniformLocation(program, "projection"), projection);
-  glUniform1f(glGetUniformLocation(program, "radius"), static_cast<float>(radius));
-  glUniform2f(glGetUniformLocation(program, "depth_transform"),
-              static_cast<float>(projection(2, 2)), static_cast<float>(projection(2, 3)));
+  set_matrix(gl().glGetUniformLocation(program, "view"), camera.view_matrix());
+  set_matrix(gl().glGetUniformLocation(program, "projection"), projection);
+  gl().glUniform1f(gl().glGetUniformLocation(program, "radius"), static_cast<float>(radius));
+  gl().glUniform2f(gl().glGetUniformLocation(program, "depth_transform"),
+                   static_cast<float>(projection(2, 2)), static_cast<float>(projection(2, 3)));
 
-  glBindVertexArray(vertex_array_);
-  glActiveTexture(GL_TEXTURE0);
-  glBindTexture(GL_TEXTURE_BUFFER, instance_texture_);
-  glBindBuffer(GL_TEXTURE_BUFFER, instance_buffer_);
+  gl().glBindVertexArray(vertex_array_);
+  gl().glActiveTexture(GL_TEXTURE0);
+  gl().glBindTexture(GL_TEXTURE_BUFFER, instance_texture_);
+  gl().glBindBuffer(GL_TEXTURE_BUFFER, instance_buffer_);
   // Large frames are drawn in slices that fit the buffer texture's size limit.
   const std::size_t slice = static_cast<std::size_t>(std::max(max_spheres_, 1));
   for (std::size_t first = 0; first < spheres.size(); first += slice) {
@@ -198,13 +196,13 @@ void SphereImpostorPass::draw(const std::vector<SphereInstance>& spheres, const 
     // Reuse the buffer's storage from frame to frame: reallocating it costs page faults.
     const auto bytes = static_cast<GLsizeiptr>(n * sizeof(SphereInstance));
     if (bytes > buffer_capacity_) {
-      glBufferData(GL_TEXTURE_BUFFER, bytes, nullptr, GL_DYNAMIC_DRAW);
+      gl().glBufferData(GL_TEXTURE_BUFFER, bytes, nullptr, GL_DYNAMIC_DRAW);
       buffer_capacity_ = bytes;
     }
-    glBufferSubData(GL_TEXTURE_BUFFER, 0, bytes, spheres.data() + first);
-    glDrawArrays(GL_TRIANGLES, 0, static_cast<GLsizei>(6 * n));
+    gl().glBufferSubData(GL_TEXTURE_BUFFER, 0, bytes, spheres.data() + first);
+    gl().glDrawArrays(GL_TRIANGLES, 0, static_cast<GLsizei>(6 * n));
   }
-  glBindVertexArray(0);
+  gl().glBindVertexArray(0);
 }
 
 }  // namespace washout::render
