@@ -9,11 +9,11 @@
 namespace washout::render {
 namespace {
 
+using GetProcAddress = decltype(&::OSMesaGetProcAddress);
+
+// By name from the library's exports, else from OSMesa, which hands out every GL entry point.
 template <class Function>
-void resolve(void* library, const char* name, Function& target) {
-  // OSMesa hands out every GL entry point; dlsym finds those the library exports by name.
-  using GetProc = decltype(&::OSMesaGetProcAddress);
-  static const auto get_proc = reinterpret_cast<GetProc>(dlsym(library, "OSMesaGetProcAddress"));
+void resolve(void* library, GetProcAddress get_proc, const char* name, Function& target) {
   void* found = dlsym(library, name);
   if (!found && get_proc) found = reinterpret_cast<void*>(get_proc(name));
   if (!found)
@@ -29,11 +29,12 @@ GlApi load() {
   if (!library)
     throw ContextError(std::string("cannot load libOSMesa (is libosmesa6 installed?): ") +
                        dlerror());
+  const auto get_proc = reinterpret_cast<GetProcAddress>(dlsym(library, "OSMesaGetProcAddress"));
   GlApi api;
-  resolve(library, "OSMesaCreateContextAttribs", api.OSMesaCreateContextAttribs);
-  resolve(library, "OSMesaMakeCurrent", api.OSMesaMakeCurrent);
-  resolve(library, "OSMesaDestroyContext", api.OSMesaDestroyContext);
-#define WASHOUT_GL_RESOLVE(name) resolve(library, #name, api.name);
+  resolve(library, get_proc, "OSMesaCreateContextAttribs", api.OSMesaCreateContextAttribs);
+  resolve(library, get_proc, "OSMesaMakeCurrent", api.OSMesaMakeCurrent);
+  resolve(library, get_proc, "OSMesaDestroyContext", api.OSMesaDestroyContext);
+#define WASHOUT_GL_RESOLVE(name) resolve(library, get_proc, #name, api.name);
   WASHOUT_GL_FUNCTIONS(WASHOUT_GL_RESOLVE)
 #undef WASHOUT_GL_RESOLVE
   return api;  // the library stays loaded for the process

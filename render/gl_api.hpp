@@ -11,19 +11,18 @@
 namespace washout::render {
 
 // The GL functions used, each called as gl().glName(...).
-#define WASHOUT_GL_FUNCTIONS(X)                                                                 \
-  X(glActiveTexture)                                                                            \
-  X(glAttachShader)                                                                             \
-  X(glBindBuffer) X(glBindTexture) X(glBindVertexArray) X(glBufferData) X(glBufferSubData)      \
-      X(glClear) X(glClearColor) X(glClearDepth) X(glCompileShader) X(glCreateProgram)          \
-          X(glCreateShader) X(glDeleteBuffers) X(glDeleteProgram) X(glDeleteShader)             \
-              X(glDeleteTextures) X(glDeleteVertexArrays) X(glDepthFunc) X(glDrawArrays)        \
-                  X(glEnable) X(glFinish) X(glGenBuffers) X(glGenTextures) X(glGenVertexArrays) \
-                      X(glGetIntegerv) X(glGetProgramInfoLog) X(glGetProgramiv)                 \
-                          X(glGetShaderInfoLog) X(glGetShaderiv) X(glGetUniformLocation)        \
-                              X(glLinkProgram) X(glShaderSource) X(glTexBuffer) X(glUniform1f)  \
-                                  X(glUniform1i) X(glUniform2f) X(glUniform3f)                  \
-                                      X(glUniformMatrix4fv) X(glUseProgram) X(glViewport)
+// clang-format off
+#define WASHOUT_GL_FUNCTIONS(X)                                                                  \
+  X(glActiveTexture) X(glAttachShader) X(glBindBuffer) X(glBindTexture) X(glBindVertexArray)     \
+  X(glBufferData) X(glBufferSubData) X(glClear) X(glClearColor) X(glClearDepth)                  \
+  X(glCompileShader) X(glCreateProgram) X(glCreateShader) X(glDeleteBuffers) X(glDeleteProgram)  \
+  X(glDeleteShader) X(glDeleteTextures) X(glDeleteVertexArrays) X(glDepthFunc) X(glDrawArrays)   \
+  X(glEnable) X(glFinish) X(glGenBuffers) X(glGenTextures) X(glGenVertexArrays)                  \
+  X(glGetIntegerv) X(glGetProgramInfoLog) X(glGetProgramiv) X(glGetShaderInfoLog)                \
+  X(glGetShaderiv) X(glGetUniformLocation) X(glLinkProgram) X(glShaderSource) X(glTexBuffer)     \
+  X(glUniform1f) X(glUniform1i) X(glUniform2f) X(glUniform3f) X(glUniformMatrix4fv)              \
+  X(glUseProgram) X(glViewport)
+// clang-format on
 
 struct GlApi {
 #define WASHOUT_GL_MEMBER(name) decltype(&::name) name = nullptr;

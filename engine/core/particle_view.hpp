@@ -8,9 +8,9 @@
 
 namespace washout {
 
-// Retired: a fluid particle that left the domain (spray thrown over a wall). It keeps its id
-// and its last place, and takes no further part: the neighbour
-// grid leaves it out, it does not move (docs/stability.md, the domain guard).
+// Retired: a fluid particle that left the domain (spray thrown over a wall). It keeps its id and
+// its last place, and takes no further part: the neighbour grid leaves it out, it does not move
+// (docs/stability.md, the domain guard).
 enum class ParticleKind : std::uint8_t {
   Fluid = 0,
   FixedWall = 1,

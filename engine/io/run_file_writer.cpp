@@ -279,6 +279,15 @@ long long RunFileWriter::ensure_group(const std::string& path) {
 
 void RunFileWriter::write_frame(const ParticleView& view, std::int64_t step,
                                 const std::vector<std::string>& fields) {
+  // Before anything is written: a frame refused leaves no group behind.
+  if (view.id) {
+    std::vector<std::uint8_t> seen(view.count, 0);
+    for (std::size_t i = 0; i < view.count; ++i)
+      if (view.id[i] >= view.count || seen[view.id[i]]++)
+        throw OutputError("frame " + std::to_string(frames_.size()) +
+                          ": the particle ids are not a permutation of 0 .. N-1 (id " +
+                          std::to_string(view.id[i]) + ")");
+  }
   char name[32];
   std::snprintf(name, sizeof name, "/frames/%06zu", frames_.size());
   hid_t group = ensure_group(name);
