@@ -93,11 +93,12 @@ class JacobiPreconditioner final : public Preconditioner {
 class PcgSolver final : public LinearSolver {
  public:
   PcgSolver(std::string name, std::unique_ptr<Preconditioner> preconditioner, double tolerance,
-            int max_iterations)
+            int max_iterations, bool upper_triangle)
       : name_(std::move(name)),
         preconditioner_(std::move(preconditioner)),
         tolerance_(tolerance),
-        max_iterations_(max_iterations) {}
+        max_iterations_(max_iterations),
+        upper_triangle_(upper_triangle) {}
   std::string name() const override { return name_; }
 
   SolveReport solve(const CsrMatrix& A, const std::vector<double>& b,
@@ -114,11 +115,15 @@ class PcgSolver final : public LinearSolver {
   }
 
  private:
-  // The products use the upper triangle alone where it pays (symmetric_product.hpp), taken
-  // once per matrix: another right-hand side of the same matrix reuses it.
+  // With upper_triangle_ (Jacobi CG), the products use the upper triangle alone where it pays
+  // (symmetric_product.hpp), taken once per matrix: another right-hand side of the same matrix
+  // reuses it.
   void take_matrix(const CsrMatrix& A, bool same_matrix) {
     if (same_matrix && product_taken_) return;
-    symmetric_.build(A);  // declined: the full rows multiply
+    if (upper_triangle_)
+      symmetric_.build(A);  // declined: the full rows multiply
+    else
+      symmetric_.clear();
     product_taken_ = true;
   }
   void multiply(const CsrMatrix& A, const std::vector<double>& v, std::vector<double>& out) {
@@ -213,6 +218,7 @@ class PcgSolver final : public LinearSolver {
   double tolerance_;
   int max_iterations_;
   std::vector<double> r_, z_, p_, q_;
+  bool upper_triangle_ = true;
   SymmetricProduct symmetric_;
   bool product_taken_ = false;
 };
@@ -236,14 +242,17 @@ double relative_residual(const CsrMatrix& A, const std::vector<double>& b,
 }
 
 std::unique_ptr<LinearSolver> make_pcg_solver(double tolerance, int max_iterations) {
-  return std::make_unique<PcgSolver>("pcg", make_jacobi_preconditioner(), tolerance,
-                                     max_iterations);
+  return std::make_unique<PcgSolver>("pcg", make_jacobi_preconditioner(), tolerance, max_iterations,
+                                     /*upper_triangle=*/true);
 }
 
 std::unique_ptr<LinearSolver> make_amg_pcg_solver(double tolerance, int max_iterations,
                                                   const AmgOptions& options) {
+  // Full rows: BoomerAMG's V-cycle is most of an iteration and its set-up needs the full rows
+  // anyway; the triangle's second copy of half the matrix cost 104 bytes a particle at the
+  // same-case a/40 and saved no time (docs/performance.md, nineteenth session).
   return std::make_unique<PcgSolver>("pcg_amg", make_boomeramg_preconditioner(options), tolerance,
-                                     max_iterations);
+                                     max_iterations, /*upper_triangle=*/false);
 }
 
 }  // namespace washout

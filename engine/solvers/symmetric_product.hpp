@@ -12,7 +12,8 @@
 // neighbour's row lies within a band of the particle's own (the particles are numbered along the
 // lattice), so a buffer spans a block and a band, not the matrix; where the numbering has mixed
 // so far that the buffers would cost more than the half saved, build() declines and the caller
-// multiplies by the full rows.
+// multiplies by the full rows. Jacobi CG (pcg) uses it; BoomerAMG CG (pcg_amg) keeps the full
+// rows, which its set-up needs anyway (pcg_solver.cpp).
 #include <cstdint>
 #include <vector>
 
