@@ -4,16 +4,18 @@
 // - it removes the amplification per step that the surface velocity smoothing otherwise has to
 //   hold: without smoothing the 2D dam break at a/20 completes with it, while the corrected
 //   form stops after 110-120 steps at any cfl (printed for comparison);
-// - a floating box takes its Archimedes draft: within 2 % at H/d0 = 10, the mean over the sixth
-//   second (measured +1.4 %; settled by 10 s at +1.6 %, the default corrected form at +0.2 %).
-//   Until the seventeenth session's gradient scale this ran 1.5 s, where the window's mean
-//   depends on the heave's phase (0.97 % then, 2.75 % with the scale).
+// - a floating box takes its Archimedes draft: within 2 % at H/d0 = 10, the mean over the last
+//   two of six seconds, about three heave periods (+1.5 to +1.6 %; settled by 10 s at +1.6 %,
+//   the default corrected form at +0.2 %). A shorter window's mean depends on the heave's phase:
+//   1.5 s runs gave 0.97 %, then 2.75 % with the seventeenth session's gradient scale; the sixth
+//   second alone 1.4 %, 1.9 % and 2.1 % as round-off moved the heave.
 #include <gtest/gtest.h>
 
+#include <cmath>
 #include <cstdio>
 #include <string>
 
-#include "support/scene_runner.hpp"
+#include "support/box_draft.hpp"
 
 namespace washout {
 namespace {
@@ -45,8 +47,22 @@ TEST(SurfaceGradientOption, GhostFormHoldsTheDamBreakWithoutSurfaceSmoothing) {
 TEST(SurfaceGradientOption, FloatingBoxTakesItsArchimedesDraft) {
   const auto out = testing::run_scene("floating_box_2d.lua", "floating_ghost_gradient",
                                       {{"end_time", "6"}, {"surface_gradient", "ghost"}});
-  const double error = score(out, "draft");
-  std::printf("floating box, d0 = 0.01 m, ghost surface gradient: draft error %.4f\n", error);
+  // The mean over the last two seconds, about three heave periods: the scene's own score (the
+  // last second, one and a half periods) moves with the heave's phase, 1.5-2.1 % as round-off
+  // moves it (docs/performance.md, twentieth session).
+  io::RunFileReader file(out.h5_path);
+  const auto time = file.read_doubles("/bodies/box/time");
+  const auto drafts = testing::box_draft(file, {"level_left", "level_right"}, 1, 0.05);
+  double mean = 0;
+  int rows = 0;
+  for (std::size_t r = 0; r < time.size(); ++r)
+    if (time[r] >= 4.0) mean += drafts[r], ++rows;
+  mean /= rows;
+  const double error = std::abs(mean - 0.05) / 0.05;
+  std::printf(
+      "floating box, d0 = 0.01 m, ghost surface gradient: draft error %.4f over 4-6 s "
+      "(scene's score over 5-6 s %.4f)\n",
+      error, score(out, "draft"));
   EXPECT_LT(error, 0.02);
 }
 
