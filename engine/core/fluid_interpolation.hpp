@@ -18,12 +18,15 @@ double accumulate_fluid_at(const SphContext& ctx, const NeighborGrid& grid, cons
                            const double m[3], Accumulate&& accumulate) {
   const double r2max = 4.0 * ctx.h * ctx.h;
   double weight_sum = 0.0;
-  grid.for_each_within_below(p, m, static_cast<std::uint32_t>(p.fluid_count), r2max,
-                             [&](std::uint32_t f, const double*, double r2) {
-                               const double w = ctx.kernel.value(std::sqrt(r2));
-                               weight_sum += w;
-                               accumulate(f, w);
-                             });
+  grid.for_each_candidate_below(m, static_cast<std::uint32_t>(p.fluid_count), [&](std::uint32_t f) {
+    double d[3] = {m[0] - p.position[0][f], m[1] - p.position[1][f], m[2] - p.position[2][f]};
+    if (ctx.periodic.any()) ctx.periodic.minimum_image(d);
+    const double r2 = d[0] * d[0] + d[1] * d[1] + d[2] * d[2];
+    if (r2 >= r2max) return;
+    const double w = ctx.kernel.value(std::sqrt(r2));
+    weight_sum += w;
+    accumulate(f, w);
+  });
   return weight_sum * ctx.volume;
 }
 

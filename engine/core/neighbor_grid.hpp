@@ -37,13 +37,6 @@ class NeighborGrid {
   template <class Visit>
   void for_each_candidate_below(const double p[3], std::uint32_t limit, Visit&& visit) const;
 
-  // Calls visit(j, d, r2) for every particle j with index below `limit` and |d|^2 = r2 < r2max,
-  // d = p - x_j (periodic minimum image), x_j taken from `particles` as they are now (they may
-  // have moved since build()), in the order of for_each_candidate_below.
-  template <class Visit>
-  void for_each_within_below(const Particles& particles, const double p[3], std::uint32_t limit,
-                             double r2max, Visit&& visit) const;
-
   // CSR list of all j != i with |x_i - x_j| < radius, for i in [0, query_count).
   void build_list(const Particles& particles, std::size_t query_count, double radius,
                   NeighborList& list) const;
@@ -123,41 +116,6 @@ void NeighborGrid::for_each_candidate_below(const double p[3], std::uint32_t lim
   for_each_cell_around(p, [&](std::uint32_t begin, std::uint32_t end) {
     for (std::uint32_t k = begin; k < end; ++k)
       if (sorted_[k] < limit) visit(sorted_[k]);
-  });
-}
-
-template <class Visit>
-void NeighborGrid::for_each_within_below(const Particles& particles, const double p[3],
-                                         std::uint32_t limit, double r2max, Visit&& visit) const {
-  const double* X = particles.position[0].data();
-  const double* Y = particles.position[1].data();
-  const double* Z = particles.position[2].data();
-  const bool periodic = periodic_.any();
-  const auto offset = [&](std::uint32_t j, double d[3]) {
-    d[0] = p[0] - X[j];
-    d[1] = p[1] - Y[j];
-    d[2] = p[2] - Z[j];
-    if (periodic) periodic_.minimum_image(d);
-    return d[0] * d[0] + d[1] * d[1] + d[2] * d[2];
-  };
-  // A row of cells is first filtered without a branch per candidate (each is written, and the
-  // count advances past those inside: which are is as good as random, and a branch on each was
-  // mispredicted often), then the few inside are visited.
-  thread_local std::vector<std::uint32_t> near;
-  for_each_cell_around(p, [&](std::uint32_t begin, std::uint32_t end) {
-    if (near.size() < end - begin) near.resize(2 * (end - begin));
-    std::size_t count = 0;
-    for (std::uint32_t k = begin; k < end; ++k) {
-      const std::uint32_t j = sorted_[k];
-      double d[3];
-      near[count] = j;
-      count += (j < limit) & (offset(j, d) < r2max);
-    }
-    for (std::size_t c = 0; c < count; ++c) {
-      double d[3];
-      const double r2 = offset(near[c], d);
-      visit(near[c], d, r2);
-    }
   });
 }
 

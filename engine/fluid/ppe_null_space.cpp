@@ -30,9 +30,11 @@ std::size_t fix_free_pressure_levels(const std::vector<std::uint8_t>& anchored_r
                                      std::vector<double>& rhs) {
   const std::size_t rows = A.rows;
   UnionFind components(rows);
+  // The pattern is symmetric (neighbourhood is): the entries above the diagonal hold every edge.
   for (std::size_t r = 0; r < rows; ++r)
     for (std::int64_t k = A.row_start[r] + 1; k < A.row_start[r + 1]; ++k)
-      components.unite(static_cast<std::int32_t>(r), A.column[k]);
+      if (static_cast<std::size_t>(A.column[k]) > r)
+        components.unite(static_cast<std::int32_t>(r), A.column[k]);
   std::vector<std::uint8_t> anchored(rows, 0);
   for (std::size_t r = 0; r < rows; ++r)
     if (anchored_row[r]) anchored[components.find(static_cast<std::int32_t>(r))] = 1;
