@@ -1,6 +1,7 @@
 // Kernel, neighbour search and SPH operators of METHOD.md on lattices.
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 #include <random>
 #include <set>
@@ -83,11 +84,58 @@ TEST(NeighborGrid, MatchesBruteForce) {
           mismatches += near != (found.count(static_cast<std::uint32_t>(j)) == 1);
         }
       }
+      // No pair twice: the row's length is the number of distinct neighbours.
+      for (std::size_t i = 0; i < p.size(); ++i) {
+        const std::set<std::uint32_t> row(list.index.begin() + list.offset[i],
+                                          list.index.begin() + list.offset[i + 1]);
+        mismatches += row.size() != list.offset[i + 1] - list.offset[i];
+      }
       std::printf("dim %d periodic %d: %zu pairs, %zu mismatches\n", dim, periodic, pairs,
                   mismatches);
       EXPECT_EQ(mismatches, 0u);
       EXPECT_GT(pairs, 1000u);
     }
+}
+
+// The neighbour walk (for_each_neighbor, which takes the pairs' geometry a chunk of 64 ahead)
+// visits each listed neighbour once, in the list's order, with r_ij = x_i - x_j (periodic
+// minimum image), |r|^2 and |r| as computed directly; rows longer than one chunk included.
+TEST(Operators, NeighbourWalkVisitsTheListWithItsGeometry) {
+  for (bool periodic : {false, true}) {
+    Particles p = random_particles(3, 3000, 1.0, 11);
+    PeriodicBox pb;
+    if (periodic)
+      for (int a = 0; a < 3; ++a) pb.periodic[a] = true, pb.lower[a] = 0, pb.length[a] = 1.0;
+    const SphContext ctx(3, 0.08, 1.25, 1000.0, pb);  // h = 0.1: about 100 neighbours
+    NeighborGrid grid;
+    grid.build(p, 2.0 * ctx.h, pb);
+    NeighborList list;
+    grid.build_list(p, p.size(), 2.0 * ctx.h, list);
+    std::size_t longest = 0, wrong = 0;
+    double worst_r2 = 0.0;
+    for (std::size_t i = 0; i < p.size(); ++i) {
+      std::uint64_t k = list.offset[i];
+      for_each_neighbor(ctx, list, p, i, [&](const NeighborPair& q) {
+        if (k >= list.offset[i + 1] || q.j != list.index[k]) {
+          ++wrong;
+          return;
+        }
+        ++k;
+        double d[3];
+        ctx.displacement(p, i, q.j, d);
+        const double r2 = d[0] * d[0] + d[1] * d[1] + d[2] * d[2];
+        wrong += d[0] != q.d[0] || d[1] != q.d[1] || d[2] != q.d[2] || q.r != std::sqrt(q.r2);
+        worst_r2 = std::max(worst_r2, std::abs(q.r2 - r2) / r2);
+      });
+      wrong += k != list.offset[i + 1];
+      longest = std::max<std::size_t>(longest, list.offset[i + 1] - list.offset[i]);
+    }
+    std::printf("periodic %d: longest row %zu, wrong visits %zu, worst relative |r|^2 %.1e\n",
+                periodic, longest, wrong, worst_r2);
+    EXPECT_GT(longest, 128u);  // three chunks at least
+    EXPECT_EQ(wrong, 0u);
+    EXPECT_LT(worst_r2, 1e-15);  // the sum may be contracted otherwise: one rounding
+  }
 }
 
 // A search for the fluid alone (indices below the fluid count, walls after them) finds every
