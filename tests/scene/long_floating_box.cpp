@@ -46,14 +46,9 @@ Settled settle(const std::string& scene, int dim, double d0, double end_time, do
                                              : std::vector<std::string>{"level"};
   const auto drafts = testing::box_draft(file, probes, dim - 1, 0.05);
   Settled s;
-  int n = 0;
-  for (std::size_t r = 0; r < time.size(); ++r) {
-    if (time[r] < end_time - window) continue;
-    s.draft += drafts[r];
-    s.angle = std::max(s.angle, std::abs(angle[r]));
-    ++n;
-  }
-  s.draft /= n;
+  s.draft = testing::mean_since(time, drafts, end_time - window);
+  for (std::size_t r = 0; r < time.size(); ++r)
+    if (time[r] >= end_time - window) s.angle = std::max(s.angle, std::abs(angle[r]));
   // The heave: the box's own height. The draft also carries the tank's sloshing at the probe,
   // which in 3D with the gradient scale outlasts the heave (draft spread ratio 1.03 at d0 =
   // 0.01 m over 2 s while the box's height fell to 0.79).

@@ -53,12 +53,7 @@ TEST(SurfaceGradientOption, FloatingBoxTakesItsArchimedesDraft) {
   io::RunFileReader file(out.h5_path);
   const auto time = file.read_doubles("/bodies/box/time");
   const auto drafts = testing::box_draft(file, {"level_left", "level_right"}, 1, 0.05);
-  double mean = 0;
-  int rows = 0;
-  for (std::size_t r = 0; r < time.size(); ++r)
-    if (time[r] >= 4.0) mean += drafts[r], ++rows;
-  mean /= rows;
-  const double error = std::abs(mean - 0.05) / 0.05;
+  const double error = std::abs(testing::mean_since(time, drafts, 4.0) - 0.05) / 0.05;
   std::printf(
       "floating box, d0 = 0.01 m, ghost surface gradient: draft error %.4f over 4-6 s "
       "(scene's score over 5-6 s %.4f)\n",

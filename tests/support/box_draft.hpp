@@ -30,4 +30,14 @@ inline std::vector<double> box_draft(const io::RunFileReader& file,
   return draft;
 }
 
+// The mean of a series over its rows with t >= from (the settled draft over a last window).
+inline double mean_since(const std::vector<double>& time, const std::vector<double>& values,
+                         double from) {
+  double sum = 0;
+  int rows = 0;
+  for (std::size_t r = 0; r < time.size(); ++r)
+    if (time[r] >= from) sum += values[r], ++rows;
+  return sum / rows;
+}
+
 }  // namespace washout::testing
