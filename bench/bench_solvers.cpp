@@ -8,7 +8,7 @@
 // run does, so a BoomerAMG set-up can serve later systems (--reuse N solves per set-up).
 //   bench_solvers FILE.ppe ... [--solvers pcg,pcg_amg,cholmod] [--tolerance T] [--cold]
 //                 [--repeat R] [--sequence] [--reuse N] [--strong S] [--aggressive L] [--interp I]
-//                 [--pmax P] [--coarsen C] [--relax DOWN,UP]
+//                 [--pmax P] [--coarsen C] [--relax DOWN,UP] [--block-rows B]
 #include <omp.h>
 
 #include <algorithm>
@@ -31,7 +31,7 @@ int usage() {
       stderr,
       "usage: bench_solvers FILE.ppe ... [--solvers pcg,pcg_amg,cholmod] [--tolerance T] "
       "[--cold] [--repeat R] [--sequence] [--reuse N] [--strong S] [--aggressive L] [--interp I] "
-      "[--pmax P] [--coarsen C] [--relax DOWN,UP]\n");
+      "[--pmax P] [--coarsen C] [--relax DOWN,UP] [--block-rows B]\n");
   return 1;
 }
 
@@ -72,6 +72,8 @@ int main(int argc, char** argv) {
       amg.aggressive_levels = std::atoi(argv[++k]);
     } else if (a == "--interp" && has_value) {
       amg.interpolation = std::atoi(argv[++k]);
+    } else if (a == "--block-rows" && has_value) {
+      amg.cycle_block_rows = static_cast<std::size_t>(std::atol(argv[++k]));
     } else if (a == "--pmax" && has_value) {
       amg.max_interpolation_entries = std::atoi(argv[++k]);
     } else if (a == "--coarsen" && has_value) {

@@ -1,5 +1,7 @@
 #include "engine/solvers/sparse_matrix.hpp"
 
+#include "engine/solvers/row_sum.hpp"
+
 namespace washout {
 
 // A product with fewer non-zeros is a few tens of microseconds of work or less, where forking
@@ -12,9 +14,7 @@ void CsrMatrix::multiply(const std::vector<double>& x, std::vector<double>& y) c
   y.resize(rows);
 #pragma omp parallel for schedule(static) if (nonzeros() > kParallelNonzeros)
   for (std::size_t i = 0; i < rows; ++i) {
-    double s = 0.0;
-    for (std::int64_t k = row_start[i]; k < row_start[i + 1]; ++k) s += value[k] * x[column[k]];
-    y[i] = s;
+    y[i] = sparse_row_dot(value.data(), column.data(), row_start[i], row_start[i + 1], x.data());
   }
 }
 

@@ -41,14 +41,19 @@ class ThreadedVCycle {
   // blocks whose boundaries hold a small share of the couplings.
   static constexpr std::size_t kDefaultBlockRows = 16384;
 
+  // The Gauss-Seidel blocks of a level of this many rows: one below two blocks' worth, else
+  // about rows / block_rows rounded up to a multiple of four.
+  static std::size_t sweep_blocks(std::size_t rows, std::size_t block_rows);
+
  private:
   struct Transposed {  // P_l^T, built once per hierarchy: restriction row by row
     std::vector<int> row_start, column;
     std::vector<double> value;
   };
   void cycle(std::size_t level, const CsrView& A, const double* b, double* x);
-  // One Gauss-Seidel sweep; old: room for x before the sweep (the other blocks' values).
-  void sweep(const CsrView& A, const double* b, double* x, bool forward, std::vector<double>& old);
+  // One Gauss-Seidel sweep: down, forward from x = 0 (x's values are not read); up, backward
+  // from x. old: room for x before the sweep (the other blocks' values).
+  void sweep(const CsrView& A, const double* b, double* x, bool down, std::vector<double>& old);
 
   std::vector<CsrView> levels_, interpolation_;
   std::vector<Transposed> restriction_;

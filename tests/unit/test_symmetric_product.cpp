@@ -12,6 +12,7 @@
 #include <random>
 
 #include "engine/solvers/linear_solver.hpp"
+#include "engine/solvers/row_sum.hpp"
 #include "engine/solvers/solver_counters.hpp"
 #include "engine/solvers/symmetric_product.hpp"
 
@@ -85,6 +86,38 @@ double largest_magnitude(const std::vector<double>& a) {
 
 // 13,824 rows in 14 blocks, 0.37 M non-zeros (threaded), each block reaching about n^2 rows
 // beyond its end.
+// The row sum in four partial sums (row_sum.hpp) against the sum taken in long double, for rows
+// of every length around the unrolled four, with terms of both signs and mixed magnitudes; and
+// the gather it is given is the one it uses.
+TEST(SparseRowSum, IsTheRowsSumToRoundOffForEveryLength) {
+  std::mt19937 random(7);
+  std::uniform_real_distribution<double> uniform(-1.0, 1.0);
+  std::vector<double> x(64), value(64);
+  std::vector<std::int32_t> column(64);
+  for (auto& v : x) v = uniform(random) * std::pow(10.0, 3.0 * uniform(random));
+  double worst = 0.0;
+  for (int length = 0; length <= 13; ++length)
+    for (int trial = 0; trial < 50; ++trial) {
+      const std::int64_t begin = trial % 5, end = begin + length;
+      long double exact = 0.0L, scale = 0.0L;
+      for (std::int64_t k = begin; k < end; ++k) {
+        value[k] = uniform(random);
+        column[k] = static_cast<std::int32_t>(random() % x.size());
+        exact += static_cast<long double>(value[k]) * x[column[k]];
+        scale += std::abs(static_cast<long double>(value[k]) * x[column[k]]);
+      }
+      const double sum = sparse_row_dot(value.data(), column.data(), begin, end, x.data());
+      const double error = scale > 0 ? double(std::abs(sum - exact) / scale) : std::abs(sum);
+      worst = std::max(worst, error);
+      // Each term enters one of four sums of at most four terms, then three additions.
+      EXPECT_LT(error, 8 * 1.2e-16) << "length " << length;
+      const double doubled = sparse_row_sum(value.data(), column.data(), begin, end,
+                                            [&](std::int32_t j) { return 2.0 * x[j]; });
+      EXPECT_EQ(doubled, 2.0 * sum);  // exact: doubling commutes with every rounding
+    }
+  std::printf("largest error of a row sum, relative to the sum of |terms|: %.2e\n", worst);
+}
+
 TEST(SymmetricProduct, MatchesTheFullRowsAndIsTheSameOnAnyThreadCount) {
   const int n = 24;
   const CsrMatrix A = stencil_matrix(n, identity_order(n));

@@ -4,12 +4,14 @@
 #include <gtest/gtest.h>
 #include <omp.h>
 
+#include <algorithm>
 #include <cmath>
 #include <cstdio>
 #include <numeric>
 
 #include "engine/solvers/linear_solver.hpp"
 #include "engine/solvers/preconditioner.hpp"
+#include "engine/solvers/threaded_vcycle.hpp"
 
 namespace washout {
 namespace {
@@ -84,15 +86,38 @@ TEST(ThreadedVCycle, OneBlockIsHypresCycle) {
   EXPECT_LT(difference, 1e-10);  // the same sweeps; only the rounding of the coarsest solve
 }
 
+TEST(ThreadedVCycle, SweepBlocksAreSharedEquallyByTwoOrFourThreads) {
+  constexpr std::size_t block = ThreadedVCycle::kDefaultBlockRows;
+  // The same-case dam break at a/40: 64,000 rows were three blocks, one thread doing two.
+  EXPECT_EQ(ThreadedVCycle::sweep_blocks(64000, block), 4u);
+  std::size_t smallest = block, largest = 0;
+  for (std::size_t rows = 1000; rows < 3000000; rows = rows * 21 / 20 + 7) {
+    const std::size_t blocks = ThreadedVCycle::sweep_blocks(rows, block);
+    if (rows < 2 * block) {
+      EXPECT_EQ(blocks, 1u) << rows << " rows";
+      continue;
+    }
+    EXPECT_EQ(blocks % 4, 0u) << rows << " rows";
+    smallest = std::min(smallest, rows / blocks);
+    largest = std::max(largest, rows / blocks);
+  }
+  std::printf("rows a block from two blocks' worth up: %zu to %zu (block_rows %zu)\n", smallest,
+              largest, block);
+  // Rounding the count up splits at most twice as fine (two blocks' worth in four); a count of
+  // four or more leaves at most a quarter block over (4 blocks' worth plus 0.99 in four).
+  EXPECT_GE(smallest, block / 2);
+  EXPECT_LT(largest, block + block / 4);
+}
+
 TEST(ThreadedVCycle, BlocksKeepTheCycleSymmetricAndThreadIndependent) {
   const CsrMatrix A = variable_laplacian(24);
   AmgOptions blocks;
-  blocks.cycle_block_rows = A.rows / 6;
+  blocks.cycle_block_rows = A.rows / 6;  // six blocks' worth: eight blocks
   const auto u = wavy(A.rows, 0.7), v = wavy(A.rows, 1.3);
   const auto Mu = cycle(A, blocks, u), Mv = cycle(A, blocks, v);
   const double uMv = std::inner_product(u.begin(), u.end(), Mv.begin(), 0.0);
   const double vMu = std::inner_product(v.begin(), v.end(), Mu.begin(), 0.0);
-  std::printf("six blocks: u.M^-1 v = %.12e, v.M^-1 u = %.12e\n", uMv, vMu);
+  std::printf("eight blocks: u.M^-1 v = %.12e, v.M^-1 u = %.12e\n", uMv, vMu);
   EXPECT_NEAR(uMv, vMu, 1e-10 * std::abs(uMv));
   const int threads = omp_get_max_threads();
   omp_set_num_threads(1);
