@@ -84,8 +84,6 @@ double largest_magnitude(const std::vector<double>& a) {
   return m;
 }
 
-// 13,824 rows in 14 blocks, 0.37 M non-zeros (threaded), each block reaching about n^2 rows
-// beyond its end.
 // The row sum in four partial sums (row_sum.hpp) against the sum taken in long double, for rows
 // of every length around the unrolled four, with terms of both signs and mixed magnitudes; and
 // the gather it is given is the one it uses.
@@ -118,6 +116,8 @@ TEST(SparseRowSum, IsTheRowsSumToRoundOffForEveryLength) {
   std::printf("largest error of a row sum, relative to the sum of |terms|: %.2e\n", worst);
 }
 
+// 13,824 rows in 14 blocks, 0.37 M non-zeros (threaded), each block reaching about n^2 rows
+// beyond its end.
 TEST(SymmetricProduct, MatchesTheFullRowsAndIsTheSameOnAnyThreadCount) {
   const int n = 24;
   const CsrMatrix A = stencil_matrix(n, identity_order(n));
