@@ -41,7 +41,10 @@ void finish_hypre() {
 
 // MPI and hypre once per process. A process not started by mpirun is a singleton: it talks only
 // to itself, so it need not start a daemon or probe network transports (0.9 s -> 0.5 s); a
-// setting the user made in the environment wins.
+// setting the user made in the environment wins. Nor does it need Open MPI's session directory:
+// every isolated singleton of a user shares /tmp/ompi.<host>.<uid>/jf.0, and one run finishing
+// removes it while another run starting creates it, so runs side by side (a parameter sweep,
+// ctest -j) failed in MPI_Init one time in about a hundred.
 void start_hypre() {
   static std::once_flag once;
   std::call_once(once, [] {
@@ -52,6 +55,7 @@ void start_hypre() {
         setenv("OMPI_MCA_ess_singleton_isolated", "1", 0);
         setenv("OMPI_MCA_btl", "self", 0);
         setenv("OMPI_MCA_pml", "ob1", 0);
+        setenv("OMPI_MCA_orte_create_session_dirs", "0", 0);
       }
       int provided = 0;
       if (MPI_Init_thread(nullptr, nullptr, MPI_THREAD_FUNNELED, &provided) != MPI_SUCCESS)
