@@ -1,6 +1,7 @@
 #include "engine/boundary/virtual_markers.hpp"
 
 #include <algorithm>
+#include <atomic>
 #include <cmath>
 
 #include "engine/core/fluid_interpolation.hpp"
@@ -10,13 +11,21 @@ namespace washout {
 std::size_t mark_active_boundary(const NeighborList& list, const Particles& p,
                                  std::vector<std::uint8_t>& active) {
   active.assign(p.size(), 0);
+  // One pass over every fluid pair: on all threads (serial it was about 1 % of a step). Threads
+  // that meet the same wall particle all write the same 1, through an atomic reference so that
+  // the writes are defined; reading first leaves a line that is already marked unshared.
+  const std::size_t queries = list.size();
+#pragma omp parallel for schedule(static)
+  for (std::size_t i = 0; i < queries; ++i)
+    for (std::uint64_t k = list.offset[i]; k < list.offset[i + 1]; ++k) {
+      const std::uint32_t j = list.index[k];
+      if (j < p.fluid_count) continue;
+      std::atomic_ref<std::uint8_t> mark(active[j]);
+      if (!mark.load(std::memory_order_relaxed)) mark.store(1, std::memory_order_relaxed);
+    }
   std::size_t count = 0;
-  for (std::size_t i = 0; i < list.size(); ++i)
-    for (std::uint64_t k = list.offset[i]; k < list.offset[i + 1]; ++k)
-      if (list.index[k] >= p.fluid_count && !active[list.index[k]]) {
-        active[list.index[k]] = 1;
-        ++count;
-      }
+#pragma omp parallel for schedule(static) reduction(+ : count)
+  for (std::size_t w = p.fluid_count; w < p.size(); ++w) count += active[w];
   return count;
 }
 

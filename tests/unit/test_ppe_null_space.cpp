@@ -1,0 +1,117 @@
+// The pressure level of closed regions (engine/fluid/ppe_null_space.cpp) and the boundary
+// particles the fluid sees (engine/boundary/virtual_markers.cpp): both walk every pair of a step
+// on all threads, and both must give the same answer on any number of threads.
+#include <gtest/gtest.h>
+#include <omp.h>
+
+#include <cmath>
+#include <cstdio>
+#include <numeric>
+#include <vector>
+
+#include "engine/boundary/virtual_markers.hpp"
+#include "engine/fluid/pressure_poisson_parts.hpp"
+
+namespace washout {
+namespace {
+
+// A symmetric pattern of `rows` rows from undirected edges, each row's diagonal first.
+CsrMatrix from_edges(std::size_t rows, const std::vector<std::pair<int, int>>& edges) {
+  std::vector<std::vector<int>> adjacent(rows);
+  for (const auto& [a, b] : edges) {
+    adjacent[a].push_back(b);
+    adjacent[b].push_back(a);
+  }
+  CsrMatrix A;
+  A.rows = rows;
+  A.row_start.assign(rows + 1, 0);
+  for (std::size_t r = 0; r < rows; ++r) {
+    A.column.push_back(static_cast<std::int32_t>(r));
+    A.value.push_back(1.0 + double(adjacent[r].size()));
+    for (int c : adjacent[r]) {
+      A.column.push_back(c);
+      A.value.push_back(-1.0);
+    }
+    A.row_start[r + 1] = static_cast<std::int64_t>(A.column.size());
+  }
+  return A;
+}
+
+struct Fixed {
+  std::size_t regions = 0;
+  std::vector<double> rhs, diagonal;
+};
+
+Fixed fix_on_threads(int threads, CsrMatrix A, const std::vector<std::uint8_t>& anchored,
+                     std::vector<double> rhs) {
+  const int before = omp_get_max_threads();
+  omp_set_num_threads(threads);
+  Fixed f;
+  f.regions = fix_free_pressure_levels(anchored, A, rhs);
+  omp_set_num_threads(before);
+  f.rhs = rhs;
+  for (std::size_t r = 0; r < A.rows; ++r) f.diagonal.push_back(A.value[A.row_start[r]]);
+  return f;
+}
+
+// Three regions whose edges cross every cut the threads could make: the even rows in one chain
+// from 0 to 998, the odd rows below 500 in another, the odd rows above in a third, anchored at row
+// 777. The two free regions (roots 0 and 1) get a right-hand side of zero mean and a doubled
+// diagonal at their smallest row; the anchored one is left alone.
+TEST(PpeNullSpace, ClosedRegionsAreFoundAlikeOnAnyNumberOfThreads) {
+  const std::size_t rows = 1000;
+  std::vector<std::pair<int, int>> edges;
+  for (int r = 0; r + 2 < int(rows); r += 2) edges.emplace_back(r, r + 2);
+  for (int r = 1; r + 2 < 500; r += 2) edges.emplace_back(r, r + 2);
+  for (int r = 501; r + 2 < int(rows); r += 2) edges.emplace_back(r, r + 2);
+  const CsrMatrix A = from_edges(rows, edges);
+  std::vector<std::uint8_t> anchored(rows, 0);
+  anchored[777] = 1;
+  std::vector<double> rhs(rows);
+  for (std::size_t r = 0; r < rows; ++r) rhs[r] = std::sin(0.37 * double(r)) + 0.25;
+
+  const Fixed one = fix_on_threads(1, A, anchored, rhs);
+  EXPECT_EQ(one.regions, 2u);
+  const auto region_mean = [&](const Fixed& f, int first, int last) {
+    double sum = 0.0;
+    int count = 0;
+    for (int r = first; r <= last; r += 2, ++count) sum += f.rhs[r];
+    return sum / count;
+  };
+  EXPECT_NEAR(region_mean(one, 0, 998), 0.0, 1e-14);
+  EXPECT_NEAR(region_mean(one, 1, 499), 0.0, 1e-14);
+  for (int r = 501; r < int(rows); r += 2) EXPECT_EQ(one.rhs[r], rhs[r]) << r;
+  EXPECT_EQ(one.diagonal[0], 2.0 * A.value[A.row_start[0]]);
+  EXPECT_EQ(one.diagonal[1], 2.0 * A.value[A.row_start[1]]);
+  for (std::size_t r = 2; r < rows; ++r) EXPECT_EQ(one.diagonal[r], A.value[A.row_start[r]]) << r;
+  std::printf("free regions found: %zu; their right-hand side means %.1e and %.1e\n", one.regions,
+              region_mean(one, 0, 998), region_mean(one, 1, 499));
+
+  for (int threads : {2, 3, 7}) {
+    const Fixed many = fix_on_threads(threads, A, anchored, rhs);
+    EXPECT_EQ(many.regions, one.regions) << threads << " threads";
+    EXPECT_EQ(many.rhs, one.rhs) << threads << " threads";
+    EXPECT_EQ(many.diagonal, one.diagonal) << threads << " threads";
+  }
+}
+
+// Fluid particles 0-3, wall particles 4-9: the fluid sees walls 5, 7 and 9 (two of them from
+// more than one fluid particle), and 4, 6, 8 are dry.
+TEST(ActiveBoundary, MarksEveryWallParticleSomeFluidSeesOnAnyNumberOfThreads) {
+  Particles p;
+  for (int i = 0; i < 4; ++i) p.add(ParticleKind::Fluid, Vec3::Zero(), Vec3::Zero(), -1);
+  for (int i = 0; i < 6; ++i) p.add(ParticleKind::FixedWall, Vec3::Zero(), Vec3::Zero(), 0);
+  NeighborList list;
+  list.offset = {0, 3, 5, 5, 8};
+  list.index = {1, 5, 7, 0, 7, 9, 5, 2};
+  for (int threads : {1, 2, 3}) {
+    omp_set_num_threads(threads);
+    std::vector<std::uint8_t> active;
+    EXPECT_EQ(mark_active_boundary(list, p, active), 3u) << threads << " threads";
+    EXPECT_EQ(active, (std::vector<std::uint8_t>{0, 0, 0, 0, 0, 1, 0, 1, 0, 1}))
+        << threads << " threads";
+  }
+}
+
+}  // namespace
+}  // namespace washout
