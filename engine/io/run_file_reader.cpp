@@ -95,7 +95,15 @@ RunFileReader::RunFileReader(const std::string& path) : path_(path) {
   H5Eset_auto2(H5E_DEFAULT, nullptr, nullptr);
   if (!std::filesystem::exists(path) || H5Fis_hdf5(path.c_str()) <= 0)
     throw RunFileError("cannot open run file '" + path + "' (missing or not HDF5)");
-  file_ = H5Fopen(path.c_str(), H5F_ACC_RDONLY, H5P_DEFAULT);
+  // Without HDF5's file lock: a run holds its file locked while it writes, and a reader that asks
+  // for the lock (HDF5's default) could not open the file of a run still going, which
+  // `washout render` and the study's readers are meant to do. The writer flushes after every
+  // frame (run_file_writer.cpp), so the frames read are whole; a frame being written when the
+  // file is opened is not listed yet or fails to read, and the reader says so.
+  const hid_t access = H5Pcreate(H5P_FILE_ACCESS);
+  H5Pset_file_locking(access, false, true);
+  file_ = H5Fopen(path.c_str(), H5F_ACC_RDONLY, access);
+  H5Pclose(access);
   if (file_ < 0) throw RunFileError("cannot open run file '" + path + "'");
   const double dim = read_double_attribute(file_, "dim", path);
   d0_ = read_double_attribute(file_, "d0", path);

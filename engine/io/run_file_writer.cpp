@@ -177,7 +177,10 @@ RunFileWriter::RunFileWriter(const std::string& path, const RunHeader& header)
   const auto parent = std::filesystem::path(path).parent_path();
   if (!parent.empty()) std::filesystem::create_directories(parent, ec);
   file_ = H5Fcreate(path.c_str(), H5F_ACC_TRUNC, H5P_DEFAULT, H5P_DEFAULT);
-  if (file_ < 0) throw OutputError("cannot create output file '" + path + "'");
+  // HDF5 locks the file while a run writes it: a second run given the same output is refused.
+  if (file_ < 0)
+    throw OutputError("cannot create output file '" + path +
+                      "' (a folder that is not writable, or another run writing the same file)");
   write_header(header);
   H5Gclose(ensure_group("/frames"));
   flush();

@@ -30,6 +30,14 @@ inline std::vector<std::string> split_words(const std::string& text) {
   return words;
 }
 
+// The whole of a text file (a run's log), empty if it is not there yet.
+inline std::string read_text(const std::string& path) {
+  std::ifstream in(path, std::ios::binary);
+  std::stringstream text;
+  text << in.rdbuf();
+  return text.str();
+}
+
 inline pid_t start_washout(const std::vector<std::string>& args, const std::string& log_path) {
   const pid_t pid = fork();
   if (pid == 0) {

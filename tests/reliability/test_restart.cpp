@@ -22,13 +22,6 @@ namespace {
 namespace fs = std::filesystem;
 const std::string kScenes = std::string(WASHOUT_SOURCE_DIR) + "/scenes/";
 
-std::string read_text(const fs::path& path) {
-  std::ifstream in(path, std::ios::binary);
-  std::stringstream text;
-  text << in.rdbuf();
-  return text.str();
-}
-
 template <class T>
 bool same_bits(const std::vector<T>& a, const std::vector<T>& b) {
   return a.size() == b.size() &&
@@ -140,7 +133,7 @@ TEST(Restart, DamBreakContinuedToALaterEndTimeIsTheUninterruptedRun) {
   for (const auto& entry : fs::directory_iterator(work / "full" / "frames")) {
     const fs::path other = work / "part" / "frames" / entry.path().filename();
     ASSERT_TRUE(fs::exists(other)) << other;
-    EXPECT_EQ(read_text(entry.path()), read_text(other)) << other;
+    EXPECT_EQ(test::read_text(entry.path()), test::read_text(other)) << other;
     ++pngs;
   }
   EXPECT_EQ(pngs, 16);
@@ -223,7 +216,7 @@ test::ProgramResult stop_box_run(const fs::path& dir, const std::string& solver,
   const pid_t pid = test::start_washout(with(box_run(solver), {"--out", dir.string()}), log);
   const auto start = std::chrono::steady_clock::now();
   while (std::chrono::steady_clock::now() - start < std::chrono::seconds(60) &&
-         read_text(log).find("frame    3 ") == std::string::npos)
+         test::read_text(log).find("frame    3 ") == std::string::npos)
     std::this_thread::sleep_for(std::chrono::milliseconds(5));
   kill(pid, sig);
   return test::wait_washout(pid, log, 120);
@@ -249,7 +242,7 @@ TEST(Restart, BodyInContactKilledAndRestartedIsTheUninterruptedRun) {
   // back onto another move to a free place).
   EXPECT_GE(c.series_rows, 300u);
   EXPECT_LE(c.series_rows, 310u);
-  EXPECT_EQ(read_text(reference / "box.csv"), read_text(dir / "box.csv"));
+  EXPECT_EQ(test::read_text(reference / "box.csv"), test::read_text(dir / "box.csv"));
   std::printf(
       "box killed by SIGKILL, continued from frame %d: %d frames (%d after it) and %d "
       "series of %zu rows bitwise equal, box.csv equal\n",
@@ -275,7 +268,7 @@ TEST(Restart, BodyInContactStoppedBySigtermAndRestartedIsTheUninterruptedRun) {
   // back onto another move to a free place).
   EXPECT_GE(c.series_rows, 300u);
   EXPECT_LE(c.series_rows, 310u);
-  EXPECT_EQ(read_text(reference / "box.csv"), read_text(dir / "box.csv"));
+  EXPECT_EQ(test::read_text(reference / "box.csv"), test::read_text(dir / "box.csv"));
   std::printf(
       "box (BoomerAMG PCG) stopped by SIGTERM, continued from frame %d: %d frames and %d series "
       "bitwise "

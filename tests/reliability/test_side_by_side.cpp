@@ -1,9 +1,13 @@
-// Runs side by side (a parameter sweep, ctest -j): hypre's MPI is a singleton per process, and
-// Open MPI gives every isolated singleton of a user the same session directory
-// (TMPDIR/ompi.<host>.<uid>/jf.0). One run finishing removed it while another starting created
-// it, and the second failed in MPI_Init about one time in a hundred (the clean-clone CI of
-// afe00f7). washout now starts MPI without a session directory (engine/solvers/hypre_amg.cpp).
+// Runs side by side, and a run read while it runs.
+// - hypre's MPI is a singleton per process, and Open MPI gives every isolated singleton of a user
+//   the same session directory (TMPDIR/ompi.<host>.<uid>/jf.0). One run finishing removed it
+//   while another starting created it, and the second failed in MPI_Init about one time in a
+//   hundred (the clean-clone CI of afe00f7). washout now starts MPI without a session directory
+//   (engine/solvers/hypre_amg.cpp).
+// - HDF5 locks a file its writer holds open, so `washout render RUN.h5` on a run still going
+//   failed to open it; the reader now opens without the lock (engine/io/run_file_reader.cpp).
 #include <gtest/gtest.h>
+#include <signal.h>
 #include <sys/wait.h>
 
 #include <chrono>
@@ -105,6 +109,46 @@ TEST(RunsSideBySide, HypreRunsShareNoOpenMpiSessionDirectory) {
       "Open MPI session directory under TMPDIR: two default runs side by side %s; one "
       "run asking for it %s\n",
       both.session_seen ? "made one" : "made none", asked.session_seen ? "made one" : "made none");
+}
+
+// A run's file read while the run goes on (docs/render.md: `washout render` "after, or during, a
+// run"): HDF5 locks a file its writer holds open, and a reader that asks for the lock could not
+// open it ("cannot open run file"). The reader opens without the lock; the frames it lists are
+// whole, and the run goes on undisturbed.
+TEST(RunsSideBySide, RunFileIsReadWhileTheRunWritesIt) {
+  const fs::path work = fs::path(WASHOUT_TEST_OUTPUT_DIR) / "read_while_running";
+  fs::remove_all(work);
+  fs::create_directories(work);
+  const std::string log = (work / "run.log").string();
+  std::vector<std::string> args = amg_run(work / "run");
+  for (std::size_t k = 0; k + 1 < args.size(); ++k)
+    if (args[k] == "--set" && args[k + 1].rfind("end_time=", 0) == 0) args[k + 1] = "end_time=5";
+  const pid_t pid = test::start_washout(args, log);
+  const auto start = std::chrono::steady_clock::now();
+  while (std::chrono::steady_clock::now() - start < std::chrono::seconds(60) &&
+         test::read_text(log).find("frame    3 ") == std::string::npos)
+    std::this_thread::sleep_for(std::chrono::milliseconds(5));
+
+  std::size_t frames = 0;
+  double last_time = -1;
+  bool still_running = false;
+  try {
+    io::RunFileReader reader((work / "run" / "sinking_box_2d.h5").string());
+    frames = reader.frame_count();
+    for (std::size_t k = 0; k < frames; ++k) last_time = reader.read_frame(k).time;
+    still_running = waitpid(pid, nullptr, WNOHANG) == 0;
+  } catch (const std::exception& e) {
+    ADD_FAILURE() << "reading the file of a running run: " << e.what();
+  }
+  kill(pid, SIGTERM);  // the run stops as a user stops it: its step finished, a last frame written
+  const auto result = test::wait_washout(pid, log, 120);
+  std::printf("read %zu whole frames (the last at t = %.3f s) while the run went on\n", frames,
+              last_time);
+  EXPECT_TRUE(still_running) << "the run had ended before its file was read: nothing was shown";
+  EXPECT_GE(frames, 3u);
+  EXPECT_EQ(result.status, 4) << result.output;  // interrupted, as INTERFACE.md says
+  io::RunFileReader after((work / "run" / "sinking_box_2d.h5").string());
+  EXPECT_GT(after.frame_count(), frames);
 }
 
 }  // namespace
