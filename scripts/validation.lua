@@ -115,9 +115,7 @@ end
 --   o = { probe, reference = { x, y }, window, transform, time_scale, max_delay, delay_step,
 --         min_points }, time_scale: the transform's factor on t (the delay in its units).
 function validation.best_delay(o)
-  local cache = setmetatable({}, { __mode = "k" })  -- one fit per run, for the scores sharing it
   return function(run)
-    if cache[run] then return cache[run][1], cache[run][2] end
     local xs, ys = probe_series(run, o.probe, o.transform)
     local lo = o.window and o.window[1] or -math.huge
     local hi = o.window and o.window[2] or math.huge
@@ -143,7 +141,6 @@ function validation.best_delay(o)
       error("validation.best_delay: no delay leaves " .. (o.min_points or 1) .. " points of '" ..
             o.probe .. "' against the reference")
     end
-    cache[run] = { best_rms, best_delay }
     return best_rms, best_delay
   end
 end

@@ -79,6 +79,16 @@ inline ProgramResult wait_washout(pid_t pid, const std::string& log_path, double
   return r;
 }
 
+// Waits until the log holds `text` (a run reaching a frame) or `limit_seconds` pass.
+inline void wait_for_log(const std::string& log_path, const std::string& text,
+                         double limit_seconds) {
+  const auto start = std::chrono::steady_clock::now();
+  while (std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count() <
+             limit_seconds &&
+         read_text(log_path).find(text) == std::string::npos)
+    std::this_thread::sleep_for(std::chrono::milliseconds(5));
+}
+
 inline ProgramResult run_washout(const std::vector<std::string>& args, const std::string& log_path,
                                  double limit_seconds) {
   return wait_washout(start_washout(args, log_path), log_path, limit_seconds);

@@ -214,10 +214,7 @@ test::ProgramResult stop_box_run(const fs::path& dir, const std::string& solver,
   fs::create_directories(dir);
   const std::string log = (dir / "first.log").string();
   const pid_t pid = test::start_washout(with(box_run(solver), {"--out", dir.string()}), log);
-  const auto start = std::chrono::steady_clock::now();
-  while (std::chrono::steady_clock::now() - start < std::chrono::seconds(60) &&
-         test::read_text(log).find("frame    3 ") == std::string::npos)
-    std::this_thread::sleep_for(std::chrono::milliseconds(5));
+  test::wait_for_log(log, "frame    3 ", 60);
   kill(pid, sig);
   return test::wait_washout(pid, log, 120);
 }
