@@ -171,24 +171,68 @@ function validation.at_time(o)
   end
 end
 
+-- The integral of v(t) over [lo, hi] by trapezoids (uneven steps weigh by their length; the
+-- ends interpolated) and the span of [lo, hi] the series covers.
+local function integral(t, v, lo, hi)
+  local area, span = 0, 0
+  for k = 2, #t do
+    local a, b = math.max(t[k - 1], lo), math.min(t[k], hi)
+    if b > a then
+      local va = validation.interpolate(t, v, a)
+      local vb = validation.interpolate(t, v, b)
+      area, span = area + 0.5 * (va + vb) * (b - a), span + (b - a)
+    end
+  end
+  return area, span
+end
+
 -- abs(time mean of a series over the window - reference), divided by abs(reference) when
 -- relative = true. series(run) -> t, v (a probe's by default).
 function validation.time_mean(o)
   return function(run)
     local t, v
     if o.series then t, v = o.series(run) else t, v = run.probe(o.probe) end
-    -- Trapezoids, so that uneven steps weigh by their length.
-    local area, span = 0, 0
-    for k = 2, #t do
-      local a, b = math.max(t[k - 1], o.window[1]), math.min(t[k], o.window[2])
-      if b > a then
-        local va = validation.interpolate(t, v, a)
-        local vb = validation.interpolate(t, v, b)
-        area, span = area + 0.5 * (va + vb) * (b - a), span + (b - a)
-      end
-    end
+    local area, span = integral(t, v, o.window[1], o.window[2])
     if span <= 0 then error("validation.time_mean: the run has no sample in the window") end
     local e = math.abs(area / span - o.reference)
+    if o.relative then e = e / math.abs(o.reference) end
+    return e
+  end
+end
+
+-- The impulse of an impact: the integral of y(x) from its onset, the first x in window =
+-- {lo, hi} where y exceeds `onset`, over `duration`. Returns the impulse and the onset; nil when
+-- y never exceeds the level in the window. For a run's probe and for a measured series alike.
+function validation.impact_impulse(xs, ys, onset, duration, window)
+  for k = 1, #xs do
+    if xs[k] >= window[1] and xs[k] <= window[2] and ys[k] > onset then
+      local start = xs[k]
+      if k > 1 then  -- where y crossed the level, between the two samples
+        start = xs[k - 1] + (xs[k] - xs[k - 1]) * (onset - ys[k - 1]) / (ys[k] - ys[k - 1])
+      end
+      return (integral(xs, ys, start, start + duration)), start
+    end
+  end
+  return nil
+end
+
+-- The impulse of the probe's impact (validation.impact_impulse: onset level, duration, search
+-- window, on the transformed axes) against a measured one: the distance from the reference
+-- (the median) as a fraction of the band's half-width on that side, band = {low, high}, so that
+-- 1 is the band's edge; without a band abs(impulse - reference), divided by abs(reference) when
+-- relative.
+function validation.impulse(o)
+  return function(run)
+    local xs, ys = probe_series(run, o.probe, o.transform)
+    local impulse = validation.impact_impulse(xs, ys, o.onset, o.duration, o.window)
+    if impulse == nil then
+      error("validation.impulse: '" .. o.probe .. "' never exceeds " .. o.onset .. " in the window")
+    end
+    if o.band then
+      local edge = impulse >= o.reference and o.band[2] or o.band[1]
+      return (impulse - o.reference) / (edge - o.reference)
+    end
+    local e = math.abs(impulse - o.reference)
     if o.relative then e = e / math.abs(o.reference) end
     return e
   end
