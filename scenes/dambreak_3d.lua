@@ -27,5 +27,6 @@ washout.wall { tank.open_box(P, { min = { 0, 0, 0 },
                name = "tank" }
 washout.probe { name = "front", quantity = "front", axis = "x" }
 -- Bound: a regression bound, what the engine reaches at a/d0 = 10 and 20 with a margin
--- (docs/validation.md); Martin & Moyce's slow release keeps the error from falling with d0.
+-- (docs/validation.md); the error does not fall with d0 (docs/method.md, the twenty-second and
+-- twenty-third sessions).
 validation.martin_moyce_front(P, P.column_width, 0.25)

@@ -298,7 +298,12 @@ end
 -- `front` (quantity "front", axis x, the column's back wall at x = 0). Error: RMS of
 -- Z - Z_ref, Z = x/a, at the points of their Table 2 (Ocellaris transcription) with
 -- T = t sqrt(2 g / a) <= 3 (and within the run).
-function validation.martin_moyce_front(P, a, bound)
+-- With height_probe (quantity "water_height" at the back wall) it also scores their second
+-- measurement, the residual height of the column at the back wall, H = eta / (2a) against
+-- tau = t sqrt(g / a) (mm1952_n2_residual_height_table.csv), undelayed and with the clock moved
+-- by the front's best delay: the same experiment's clock, so a release that set out late would
+-- show in both. Runs ending before the table's fifth point (tau = 1.28) score the front alone.
+function validation.martin_moyce_front(P, a, bound, height_probe)
   local table2 = validation.csv("mm1952_n2_front_table.csv",
                                 function(row) return row.source == "ocellaris_table2" end)
   local scale = math.sqrt(2 * validation.g(P) / a)
@@ -316,9 +321,10 @@ function validation.martin_moyce_front(P, a, bound)
   }
   -- The same front with the experiment's clock moved by the delay that fits it best: is the
   -- surge right once the release is set aside? A converged instantaneous release runs ahead of
-  -- Martin & Moyce by a clock offset that grows towards about 20 ms as d0 shrinks, and with it
-  -- matches their table to about 0.04 (docs/method.md, "The twenty-second session"). A
-  -- diagnostic beside the front, not a bound.
+  -- Martin & Moyce's front by an offset that grows towards about 20 ms as d0 shrinks, and with
+  -- it matches their table to about 0.04 (docs/method.md, "The twenty-second session"); their
+  -- residual height does not take the same offset ("The twenty-third session"). A diagnostic
+  -- beside the front, not a bound.
   local delayed = validation.best_delay {
     probe = "front", window = { 0, 3 }, min_points = 5, reference = reference,
     transform = transform, time_scale = scale, max_delay = 0.04,
@@ -328,6 +334,38 @@ function validation.martin_moyce_front(P, a, bound)
     metric = "the front's RMS with the experiment's clock moved by its best delay, -40 to 40 ms",
     reference = "Martin & Moyce (1952) n^2 = 2 front, Table 2 (mm1952_n2_front_table.csv)",
     error = function(run) return (delayed(run)) end,
+  }
+  if height_probe == nil then return end
+  local heights = validation.csv("mm1952_n2_residual_height_table.csv")
+  local height_scale = math.sqrt(validation.g(P) / a)
+  -- Scored where the run reaches five of the table's points (a short run scores the front only).
+  if P.end_time * height_scale < heights.tau_t_sqrt_g_over_a[5] then return end
+  local height_reference = { x = heights.tau_t_sqrt_g_over_a, y = heights.H_eta_over_2a }
+  local height_transform = function(t, h) return t * height_scale, h / (2 * a) end
+  washout.validation {
+    name = "residual_height",
+    metric = "RMS of H - H_ref, H = eta/(2a) at the back wall, at the table's points with " ..
+             "tau = t sqrt(g/a) <= 3.5",
+    reference = "Martin & Moyce (1952) n^2 = 2 residual height (mm1952_n2_residual_height_table.csv)",
+    error = validation.series_rms {
+      probe = height_probe, window = { 0, 3.5 }, min_points = 5, reference = height_reference,
+      transform = height_transform,
+    },
+  }
+  -- The height with the clock moved by the front's best delay, delay * height_scale in tau.
+  washout.validation {
+    name = "residual_height_at_front_delay",
+    metric = "the residual height's RMS with the experiment's clock moved by the front's best delay",
+    reference = "Martin & Moyce (1952) n^2 = 2 residual height (mm1952_n2_residual_height_table.csv)",
+    error = function(run)
+      local _, delay = delayed(run)
+      local xs, ys = probe_series(run, height_probe, height_transform)
+      local shifted = {}
+      for k = 1, #xs do shifted[k] = xs[k] + delay * height_scale end
+      local sum2, count = table_errors(shifted, ys, height_reference, 0, 3.5)
+      if count < 5 then error("validation: " .. count .. " residual heights after the delay") end
+      return math.sqrt(sum2 / count)
+    end,
   }
 end
 
