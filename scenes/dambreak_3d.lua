@@ -26,7 +26,10 @@ washout.wall { tank.open_box(P, { min = { 0, 0, 0 },
                                   max = { P.tank_length, P.tank_width, P.tank_height } }),
                name = "tank" }
 washout.probe { name = "front", quantity = "front", axis = "x" }
+-- The column's height at the back wall, mid-width (Martin & Moyce's residual height).
+washout.probe { name = "residual_height", quantity = "water_height",
+                at = { 0.5 * P.d0, 0.5 * P.tank_width, 0 } }
 -- Bound: a regression bound, what the engine reaches at a/d0 = 10 and 20 with a margin
 -- (docs/validation.md); the error does not fall with d0 (docs/method.md, the twenty-second and
 -- twenty-third sessions).
-validation.martin_moyce_front(P, P.column_width, 0.25)
+validation.martin_moyce_front(P, P.column_width, 0.25, "residual_height")
