@@ -32,4 +32,4 @@ washout.probe { name = "residual_height", quantity = "water_height",
 -- Bound: a regression bound, what the engine reaches at a/d0 = 10 and 20 with a margin
 -- (docs/validation.md); the error does not fall with d0 (docs/method.md, the twenty-second and
 -- twenty-third sessions).
-validation.martin_moyce_front(P, P.column_width, 0.25, "residual_height")
+validation.martin_moyce_front(P, P.column_width, 0.25, "residual_height", 0.25)

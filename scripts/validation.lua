@@ -145,6 +145,37 @@ function validation.best_delay(o)
   end
 end
 
+-- The speed of a probe series against a tabulated one: the least-squares slope of the probe
+-- (interpolated at the reference's points in the window, within the run) over that of the
+-- reference at the same points; returns abs(ratio - 1).
+--   o = { probe, reference = { x, y }, window, transform, min_points }
+local function slope(xs, ys)
+  local n, sx, sy, sxx, sxy = #xs, 0, 0, 0, 0
+  for k = 1, n do
+    sx, sy = sx + xs[k], sy + ys[k]
+    sxx, sxy = sxx + xs[k] * xs[k], sxy + xs[k] * ys[k]
+  end
+  return (n * sxy - sx * sy) / (n * sxx - sx * sx)
+end
+function validation.speed_ratio(o)
+  return function(run)
+    local xs, ys = probe_series(run, o.probe, o.transform)
+    local at, run_values, reference_values = {}, {}, {}
+    for k = 1, #o.reference.x do
+      local x = o.reference.x[k]
+      if x >= o.window[1] and x <= o.window[2] and x <= xs[#xs] then
+        at[#at + 1] = x
+        run_values[#at] = validation.interpolate(xs, ys, x)
+        reference_values[#at] = o.reference.y[k]
+      end
+    end
+    if #at < (o.min_points or 2) then
+      error("validation.speed_ratio: " .. #at .. " points of '" .. o.probe .. "' in the window")
+    end
+    return math.abs(slope(at, run_values) / slope(at, reference_values) - 1)
+  end
+end
+
 -- The RMS over several series_rms-like pieces pooled together: pieces = { {probe=...}, ... }
 -- with the fields of series_rms; every compared point weighs the same.
 function validation.pooled_rms(pieces)
@@ -303,7 +334,7 @@ end
 -- tau = t sqrt(g / a) (mm1952_n2_residual_height_table.csv), undelayed and with the clock moved
 -- by the front's best delay: the same experiment's clock, so a release that set out late would
 -- show in both. Runs ending before the table's fifth point (tau = 1.28) score the front alone.
-function validation.martin_moyce_front(P, a, bound, height_probe)
+function validation.martin_moyce_front(P, a, bound, height_probe, speed_bound)
   local table2 = validation.csv("mm1952_n2_front_table.csv",
                                 function(row) return row.source == "ocellaris_table2" end)
   local scale = math.sqrt(2 * validation.g(P) / a)
@@ -329,6 +360,27 @@ function validation.martin_moyce_front(P, a, bound, height_probe)
     probe = "front", window = { 0, 3 }, min_points = 5, reference = reference,
     transform = transform, time_scale = scale, max_delay = 0.04,
   }
+  -- The surge's speed once the release is over: from T = 1.15 on the lead over their table
+  -- stays constant (to 0.02 a at a/20-a/80), so the slope of Z(T) there measures the surge
+  -- itself, apart from how it set out (docs/method.md, the twenty-third session). Scored where
+  -- the run reaches five of those points.
+  local speed_points = 0
+  for _, T in ipairs(reference.x) do
+    if T >= 1.15 and T <= 3.15 and T <= P.end_time * scale then speed_points = speed_points + 1 end
+  end
+  if speed_points >= 5 then
+    washout.validation {
+      name = "front_speed",
+      metric = "abs(dZ/dT / dZ_ref/dT - 1), least-squares slopes at the table's points with " ..
+               "1.15 <= T <= 3.15",
+      reference = "Martin & Moyce (1952) n^2 = 2 front, Table 2 (mm1952_n2_front_table.csv)",
+      bound = speed_bound,
+      error = validation.speed_ratio {
+        probe = "front", window = { 1.15, 3.15 }, min_points = 5, reference = reference,
+        transform = transform,
+      },
+    }
+  end
   washout.validation {
     name = "front_after_delay",
     metric = "the front's RMS with the experiment's clock moved by its best delay, -40 to 40 ms",
