@@ -30,6 +30,6 @@ washout.probe { name = "front", quantity = "front", axis = "x" }
 washout.probe { name = "residual_height", quantity = "water_height",
                 at = { 0.5 * P.d0, 0.5 * P.tank_width, 0 } }
 -- Bound: a regression bound, what the engine reaches at a/d0 = 10 and 20 with a margin
--- (docs/validation.md); the error does not fall with d0 (docs/method.md, the twenty-second and
--- twenty-third sessions).
+-- (docs/validation.md); the error does not fall with d0, the surge's speed after the release
+-- does (front_speed, bound 0.25; docs/method.md, the twenty-second and twenty-third sessions).
 validation.martin_moyce_front(P, P.column_width, 0.25, "residual_height", 0.25)
