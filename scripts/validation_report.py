@@ -85,8 +85,8 @@ coarsest.
 
 How far the references can be trusted (validation/reference/README.md): Martin & Moyce's front
 is their Table 2 as transcribed by two codes that agree within 0.02 in Z (an instantaneous
-release runs ahead of it by up to 20 ms, an offset their residual height at the back wall does
-not share: docs/method.md, the twenty-third session); Lobovsky's front is a
+release's toe takes a lead over it in the first 0.15 s, after which the surge runs at their
+speed, `front_speed`: docs/method.md, the twenty-third session); Lobovsky's front is a
 figure-data file of the experiment (medium-high), the gauges and the sensor-1 statistics are
 the released measurements (high; sensor 1 is a 2.5-97.5 % band over repeated runs at each
 instant, decimated to every 5th sample here: the scatter of the runs' impact times smooths its
