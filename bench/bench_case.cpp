@@ -125,6 +125,12 @@ int main(int argc, char** argv) {
     error = "{\"name\": " + quoted(out.scores.front().name) +
             ", \"value\": " + number(out.scores.front().error) +
             ", \"metric\": " + quoted(out.scores.front().metric) + "}";
+  // Every score the scene computed, by name (the Martin & Moyce cases: front, front_speed, ...).
+  std::string errors;
+  for (const auto& score : out.scores)
+    if (score.failure.empty())
+      errors += (errors.empty() ? "" : ", ") + quoted(score.name) + ": " + number(score.error);
+  errors = "{" + errors + "}";
   std::printf("{\"kind\": \"case\", \"case\": %s, \"scene\": %s, \"dim\": %s, ",
               quoted(label).c_str(), quoted(request.scene_path).c_str(),
               dim > 0 ? std::to_string(dim).c_str() : "null");
@@ -151,8 +157,9 @@ int main(int argc, char** argv) {
       number(c.operator_complexity > 0 ? c.operator_complexity : NAN).c_str(),
       number(c.setup_bytes).c_str(), number(spmv).c_str(), number(spmv / stream).c_str());
   std::printf(
-      "\"peak_rss_bytes\": %ld, \"bytes_per_particle\": %s, \"threads\": %d, \"error\": %s}\n",
+      "\"peak_rss_bytes\": %ld, \"bytes_per_particle\": %s, \"threads\": %d, \"error\": %s, "
+      "\"errors\": %s}\n",
       out.cost.peak_rss_bytes, number(double(out.cost.peak_rss_bytes) / particles).c_str(),
-      omp_get_max_threads(), error.c_str());
+      omp_get_max_threads(), error.c_str(), errors.c_str());
   return 0;
 }

@@ -10,7 +10,8 @@ FIELDS = {
     "stream": ["threads", "bytes_per_second", "array_bytes"],
     "case": ["case", "scene", "dim", "particles", "steps", "simulated_seconds", "wall_seconds",
              "seconds_per_step", "fluid_particle_steps_per_second", "particle_steps_per_second",
-             "stage_share", "ppe", "peak_rss_bytes", "bytes_per_particle", "threads", "error"],
+             "stage_share", "ppe", "peak_rss_bytes", "bytes_per_particle", "threads", "error",
+             "errors"],
     "end": ["load_average_end", "failed"],
 }
 PPE = ["solver", "mean_iterations", "solves", "mean_unknowns", "mean_nonzeros", "setup_seconds",
