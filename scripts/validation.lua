@@ -145,10 +145,7 @@ function validation.best_delay(o)
   end
 end
 
--- The speed of a probe series against a tabulated one: the least-squares slope of the probe
--- (interpolated at the reference's points in the window, within the run) over that of the
--- reference at the same points; returns abs(ratio - 1).
---   o = { probe, reference = { x, y }, window, transform, min_points }
+-- The least-squares slope of y(x).
 local function slope(xs, ys)
   local n, sx, sy, sxx, sxy = #xs, 0, 0, 0, 0
   for k = 1, n do
@@ -157,6 +154,11 @@ local function slope(xs, ys)
   end
   return (n * sxy - sx * sy) / (n * sxx - sx * sx)
 end
+
+-- The speed of a probe series against a tabulated one: the least-squares slope of the probe
+-- (interpolated at the reference's points in the window, within the run) over that of the
+-- reference at the same points; returns abs(ratio - 1).
+--   o = { probe, reference = { x, y }, window, transform, min_points }
 function validation.speed_ratio(o)
   return function(run)
     local xs, ys = probe_series(run, o.probe, o.transform)
@@ -203,14 +205,14 @@ function validation.at_time(o)
 end
 
 -- The integral of v(t) over [lo, hi] by trapezoids (uneven steps weigh by their length; the
--- ends interpolated) and the span of [lo, hi] the series covers.
+-- ends interpolated within their own step) and the span of [lo, hi] the series covers.
 local function integral(t, v, lo, hi)
   local area, span = 0, 0
   for k = 2, #t do
     local a, b = math.max(t[k - 1], lo), math.min(t[k], hi)
     if b > a then
-      local va = validation.interpolate(t, v, a)
-      local vb = validation.interpolate(t, v, b)
+      local dv, dt = v[k] - v[k - 1], t[k] - t[k - 1]
+      local va, vb = v[k - 1] + dv * (a - t[k - 1]) / dt, v[k - 1] + dv * (b - t[k - 1]) / dt
       area, span = area + 0.5 * (va + vb) * (b - a), span + (b - a)
     end
   end
@@ -231,27 +233,30 @@ function validation.time_mean(o)
   end
 end
 
--- The impulse of an impact: the integral of y(x) from its onset, the first x in window =
--- {lo, hi} where y exceeds `onset`, over `duration`. Returns the impulse and the onset; nil when
--- y never exceeds the level in the window. For a run's probe and for a measured series alike.
-function validation.impact_impulse(xs, ys, onset, duration, window)
+-- An impact's onset: the first x in window = {lo, hi} where y exceeds `level` (where it crossed
+-- the level, between the two samples); nil when y never exceeds it in the window.
+function validation.onset(xs, ys, level, window)
   for k = 1, #xs do
-    if xs[k] >= window[1] and xs[k] <= window[2] and ys[k] > onset then
-      local start = xs[k]
-      if k > 1 then  -- where y crossed the level, between the two samples
-        start = xs[k - 1] + (xs[k] - xs[k - 1]) * (onset - ys[k - 1]) / (ys[k] - ys[k - 1])
-      end
-      return (integral(xs, ys, start, start + duration)), start
+    if xs[k] >= window[1] and xs[k] <= window[2] and ys[k] > level then
+      if k == 1 then return xs[k] end
+      return xs[k - 1] + (xs[k] - xs[k - 1]) * (level - ys[k - 1]) / (ys[k] - ys[k - 1])
     end
   end
   return nil
 end
 
+-- The impulse of an impact: the integral of y(x) from its onset (validation.onset) over
+-- `duration`; nil without an onset. For a run's probe and for a measured series alike.
+function validation.impact_impulse(xs, ys, onset, duration, window)
+  local start = validation.onset(xs, ys, onset, window)
+  if start == nil then return nil end
+  return (integral(xs, ys, start, start + duration))
+end
+
 -- The impulse of the probe's impact (validation.impact_impulse: onset level, duration, search
 -- window, on the transformed axes) against a measured one: the distance from the reference
 -- (the median) as a fraction of the band's half-width on that side, band = {low, high}, so that
--- 1 is the band's edge; without a band abs(impulse - reference), divided by abs(reference) when
--- relative.
+-- 1 is the band's edge.
 function validation.impulse(o)
   return function(run)
     local xs, ys = probe_series(run, o.probe, o.transform)
@@ -259,13 +264,8 @@ function validation.impulse(o)
     if impulse == nil then
       error("validation.impulse: '" .. o.probe .. "' never exceeds " .. o.onset .. " in the window")
     end
-    if o.band then
-      local edge = impulse >= o.reference and o.band[2] or o.band[1]
-      return (impulse - o.reference) / (edge - o.reference)
-    end
-    local e = math.abs(impulse - o.reference)
-    if o.relative then e = e / math.abs(o.reference) end
-    return e
+    local edge = impulse >= o.reference and o.band[2] or o.band[1]
+    return (impulse - o.reference) / (edge - o.reference)
   end
 end
 
@@ -325,6 +325,16 @@ function validation.g(P)
   return math.sqrt(g2)
 end
 
+-- Whether a run ending at x_end (on the table's axis) reaches at least `count` of the table's
+-- points xs in [lo, hi]: a score that needs them is registered only then.
+local function reaches(xs, lo, hi, x_end, count)
+  local n = 0
+  for _, x in ipairs(xs) do
+    if x >= lo and x <= hi and x <= x_end then n = n + 1 end
+  end
+  return n >= count
+end
+
 -- Case: the Martin & Moyce (1952) n^2 = 2 surge front of a column of width a, from a probe
 -- `front` (quantity "front", axis x, the column's back wall at x = 0). Error: RMS of
 -- Z - Z_ref, Z = x/a, at the points of their Table 2 (Ocellaris transcription) with
@@ -364,11 +374,7 @@ function validation.martin_moyce_front(P, a, bound, height_probe, speed_bound)
   -- stays constant (to 0.02 a at a/20-a/80), so the slope of Z(T) there measures the surge
   -- itself, apart from how it set out (docs/method.md, the twenty-third session). Scored where
   -- the run reaches five of those points.
-  local speed_points = 0
-  for _, T in ipairs(reference.x) do
-    if T >= 1.15 and T <= 3.15 and T <= P.end_time * scale then speed_points = speed_points + 1 end
-  end
-  if speed_points >= 5 then
+  if reaches(reference.x, 1.15, 3.15, P.end_time * scale, 5) then
     washout.validation {
       name = "front_speed",
       metric = "abs(dZ/dT / dZ_ref/dT - 1), least-squares slopes at the table's points with " ..
@@ -391,7 +397,7 @@ function validation.martin_moyce_front(P, a, bound, height_probe, speed_bound)
   local heights = validation.csv("mm1952_n2_residual_height_table.csv")
   local height_scale = math.sqrt(validation.g(P) / a)
   -- Scored where the run reaches five of the table's points (a short run scores the front only).
-  if P.end_time * height_scale < heights.tau_t_sqrt_g_over_a[5] then return end
+  if not reaches(heights.tau_t_sqrt_g_over_a, 0, 3.5, P.end_time * height_scale, 5) then return end
   local height_reference = { x = heights.tau_t_sqrt_g_over_a, y = heights.H_eta_over_2a }
   local height_transform = function(t, h) return t * height_scale, h / (2 * a) end
   washout.validation {

@@ -113,7 +113,7 @@ washout.validation {
 
 -- The impact phase, read off the experiment's median: from its onset to its fall to half peak.
 local onset_level, search = 0.5, { 1.5, 3.5 }
-local _, onset = validation.impact_impulse(s1.tau, s1.s1_median, onset_level, 0, search)
+local onset = validation.onset(s1.tau, s1.s1_median, onset_level, search)
 local peak_k = 1
 for k = 1, #s1.tau do
   if s1.tau[k] <= search[2] and s1.s1_median[k] > s1.s1_median[peak_k] then peak_k = k end
