@@ -129,13 +129,13 @@ int main(int argc, char** argv) {
           "\"setup_seconds\": %.4g, \"solve_seconds\": %.4g, \"total_seconds\": %.4g, "
           "\"setup_cpu_seconds\": %.4g, \"solve_cpu_seconds\": %.4g, "
           "\"spmv_bytes_per_second\": %.4g, \"operator_complexity\": %.3g, "
-          "\"setup_bytes\": %.4g}\n",
+          "\"setup_bytes\": %.4g, \"preconditioner_seconds\": %.4g, \"product_seconds\": %.4g}\n",
           file.c_str(), system.A.rows, system.A.nonzeros(), name.c_str(), omp_get_max_threads(),
           tolerance, cold ? "false" : "true", report.iterations,
           report.converged ? "true" : "false", residual, c.setups, setup_seconds, seconds,
           setup_seconds + seconds, setup_cpu, cpu_seconds,
           c.product_seconds > 0 ? c.product_bytes / c.product_seconds : 0.0, c.operator_complexity,
-          c.setup_bytes);
+          c.setup_bytes, c.preconditioner_seconds, c.product_seconds);
       std::fflush(stdout);
     }
   }

@@ -101,19 +101,22 @@ const std::vector<ParameterInfo>& ParameterSet::engine_table() {
        d.smagorinsky_constant},
       {"solver", "-",
        "pressure solver: \"cholmod\" (direct), \"pcg\" (Jacobi-preconditioned CG, warm-started), "
-       "\"pcg_amg\" (CG preconditioned by a BoomerAMG V-cycle, warm-started), "
-       "\"auto\" (2D: pcg_amg, but cholmod up to 1000 unknowns, and up to 60000 where dynamic "
-       "bodies are solved with the pressure; 3D: pcg below 50000 unknowns, pcg_amg from 50000; "
-       "docs/performance.md)",
+       "\"pcg_agg\" (CG preconditioned by Jacobi plus a coarse correction on aggregates of "
+       "neighbouring particles, warm-started), \"pcg_amg\" (CG preconditioned by a BoomerAMG "
+       "V-cycle, warm-started), \"auto\" (2D: pcg_amg, but cholmod up to 1000 unknowns, and up "
+       "to 60000 where dynamic bodies are solved with the pressure; 3D: pcg_agg below 100000 "
+       "unknowns, pcg_amg from 100000; docs/performance.md)",
        d.solver},
-      {"solver_tolerance", "-", "relative residual |b - Ax| / |b| at which pcg and pcg_amg stop",
+      {"solver_tolerance", "-",
+       "relative residual |b - Ax| / |b| at which pcg, pcg_agg and pcg_amg stop",
        d.solver_tolerance},
       {"coupling_tolerance", "-",
        "relative residual the dynamic bodies' pressure responses are first solved to (pcg, "
-       "pcg_amg); those whose share of the coupled pressure's residual then exceeds "
+       "pcg_agg, pcg_amg); those whose share of the coupled pressure's residual then exceeds "
        "solver_tolerance are solved again to what it asks (docs/bodies.md \"Coupling\")",
        d.coupling_tolerance},
-      {"solver_max_iterations", "-", "pcg and pcg_amg iteration limit; reaching it stops the run",
+      {"solver_max_iterations", "-",
+       "pcg, pcg_agg and pcg_amg iteration limit; reaching it stops the run",
        double(d.solver_max_iterations)},
       {"pressure_gradient", "-",
        "corrector gradient: \"symmetric\" (momentum-conserving) or \"difference\"",
@@ -410,7 +413,7 @@ SimulationParameters SimulationParameters::from(const ParameterSet& set) {
   p.wall_layers = integer("wall_layers", non_negative("wall_layers"));
   p.turbulence = one_of("turbulence", {"none", "smagorinsky"});
   p.smagorinsky_constant = non_negative("smagorinsky_constant");
-  p.solver = one_of("solver", {"auto", "cholmod", "pcg", "pcg_amg"});
+  p.solver = one_of("solver", {"auto", "cholmod", "pcg", "pcg_agg", "pcg_amg"});
   p.solver_tolerance = positive("solver_tolerance");
   p.coupling_tolerance = positive("coupling_tolerance");
   p.solver_max_iterations = integer("solver_max_iterations", positive("solver_max_iterations"));

@@ -133,14 +133,18 @@ Simulation::Simulation(Model model)
   ghost_surface_ = prm.surface_pressure == "ghost";
   gradient_forms_.symmetric = prm.pressure_gradient == "symmetric";
   gradient_forms_.ghost_surface = ghost_surface_ && prm.surface_gradient == "ghost";
-  // BoomerAMG's hierarchy serves later steps only while the system keeps its size and order:
-  // with pcg_amg every fluid particle keeps a row, a drop breaking off or a squeeze film forming
-  // turns rows into identity rows instead of renumbering the rest (a new set-up nearly every step
-  // of the 3D wash-out after the surge's impact otherwise). Decided on the fluid's size (fixed for
-  // the run), the solver on the unknowns' (solve_pressure): where they fall on either side of a
-  // threshold the other solvers solve the identity rows as they are.
-  stable_ppe_rows_ =
-      resolve_solver(prm.solver, prm.dim, particles_.fluid_count, body_coupled_) == "pcg_amg";
+  // BoomerAMG's hierarchy (and pcg_agg's aggregates) serve later steps only while the system
+  // keeps its size and order: with pcg_amg and pcg_agg every fluid particle keeps a row, a drop
+  // breaking off or a squeeze film forming turns rows into identity rows instead of renumbering the
+  // rest (a new set-up nearly every step of the 3D wash-out after the surge's impact otherwise).
+  // Decided on the fluid's size (fixed for the run), the solver on the unknowns' (solve_pressure):
+  // where they fall on either side of a threshold the other solvers solve the identity rows as they
+  // are.
+  {
+    const std::string resolved =
+        resolve_solver(prm.solver, prm.dim, particles_.fluid_count, body_coupled_);
+    stable_ppe_rows_ = resolved == "pcg_amg" || resolved == "pcg_agg";
+  }
   SceneFeatures features;
   features.bodies = bodies_ != nullptr;
   for (std::size_t b = 0; bodies_ && b < bodies_->size(); ++b)

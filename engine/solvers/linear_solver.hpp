@@ -67,6 +67,7 @@ struct AmgOptions {
 
 std::unique_ptr<LinearSolver> make_cholmod_solver();
 std::unique_ptr<LinearSolver> make_pcg_solver(double tolerance, int max_iterations);
+std::unique_ptr<LinearSolver> make_aggregation_pcg_solver(double tolerance, int max_iterations);
 std::unique_ptr<LinearSolver> make_amg_pcg_solver(double tolerance, int max_iterations,
                                                   const AmgOptions& options = {});
 

@@ -246,6 +246,11 @@ std::unique_ptr<LinearSolver> make_pcg_solver(double tolerance, int max_iteratio
                                      /*upper_triangle=*/true);
 }
 
+std::unique_ptr<LinearSolver> make_aggregation_pcg_solver(double tolerance, int max_iterations) {
+  return std::make_unique<PcgSolver>("pcg_agg", make_aggregation_preconditioner(), tolerance,
+                                     max_iterations, /*upper_triangle=*/true);
+}
+
 std::unique_ptr<LinearSolver> make_amg_pcg_solver(double tolerance, int max_iterations,
                                                   const AmgOptions& options) {
   // Full rows: BoomerAMG's V-cycle is most of an iteration and its set-up needs the full rows

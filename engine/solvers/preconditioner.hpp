@@ -26,6 +26,9 @@ class Preconditioner {
 };
 
 std::unique_ptr<Preconditioner> make_jacobi_preconditioner();
+// Jacobi plus a coarse correction on aggregates of neighbouring rows
+// (aggregation_preconditioner.cpp).
+std::unique_ptr<Preconditioner> make_aggregation_preconditioner();
 // One BoomerAMG V-cycle (hypre), options in linear_solver.hpp.
 std::unique_ptr<Preconditioner> make_boomeramg_preconditioner(const AmgOptions& options);
 
