@@ -73,8 +73,8 @@ std::string resolve_solver(const std::string& requested, int dim, std::size_t un
   // fast as Jacobi CG at 8,000 unknowns and as BoomerAMG CG at 64,000), and BoomerAMG CG from
   // 100,000, where that factorisation grows too fast (1.5 s at 216,000 against 0.4 s for
   // BoomerAMG's set-up). pcg_agg is faster in 2D as well, but moved the Lobovsky impact's impulse
-  // at Courant 0.1 from 0.610 to 0.710 (both solves meet 1e-6; the impact is that sensitive to
-  // it), so 2D keeps the solver its validated figures were measured with.
+  // at Courant 0.1 from 0.610 to 0.710 (chaotic at that step: 0.61-0.71 over solvers and
+  // tolerances), so 2D keeps the solver its validated figures and tests were made with.
   if (dim == 2)
     return unknowns <= 1000 || (body_coupled && unknowns <= 60000) ? "cholmod" : "pcg_amg";
   return unknowns < 100000 ? "pcg_agg" : "pcg_amg";
