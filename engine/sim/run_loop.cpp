@@ -50,7 +50,7 @@ RunSummary Simulation::run(const std::vector<RunObserver*>& observers,
       for (auto* o : observers) o->record_frame(*this, frame, checkpoint ? &*checkpoint : nullptr);
     }
     // The solver starts afresh after every grid frame, as it does in a run restarted there: a
-    // pcg_amg set-up serving several steps would otherwise carry over the frame, and the
+    // pcg_amg or pcg_agg set-up serving several steps would otherwise carry over the frame, and the
     // restarted run would not be the one that never stopped (a few per cent more set-ups).
     if (on_grid) solver_.reset();
     summary.last_frame_time = time_;
