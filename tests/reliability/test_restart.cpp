@@ -185,8 +185,8 @@ TEST(Restart, RetiredFluidStaysRetired) {
 // The sinking box at rest on the floor: contact springs with friction, the body's velocity
 // solved with the pressure (implicit coupling, its solves warm-started from the last step's
 // response fields), particle shifting. Killed with Jacobi PCG, stopped by SIGTERM with
-// BoomerAMG PCG (a set-up serves 5 solves, 4 a step here: with 21 steps a frame, one would
-// carry over a frame if the solver did not start afresh there).
+// BoomerAMG PCG and the aggregates' PCG (a set-up serves 20 and 10 solves, 4 a step here: with
+// 21 steps a frame, one would carry over a frame if the solver did not start afresh there).
 std::vector<std::string> box_run(const std::string& solver) {
   return {"run",       kScenes + "sinking_box_2d.lua",
           "--set",     "d0=0.01",
@@ -246,13 +246,15 @@ TEST(Restart, BodyInContactKilledAndRestartedIsTheUninterruptedRun) {
       from, c.frames, c.frames_after, c.series, c.series_rows);
 }
 
-TEST(Restart, BodyInContactStoppedBySigtermAndRestartedIsTheUninterruptedRun) {
-  const fs::path reference = box_reference("restart_box_sigterm_reference", "pcg_amg");
-  const fs::path dir = fs::path(WASHOUT_TEST_OUTPUT_DIR) / "restart_box_sigterm";
-  const auto first = stop_box_run(dir, "pcg_amg", SIGTERM);
+// Stopped by SIGTERM with a solver whose set-up serves several solves (`solver`, its name in
+// the printout), continued from the last grid frame: the uninterrupted run, bit for bit.
+void expect_sigterm_restart_is_uninterrupted(const std::string& solver, const std::string& name) {
+  const fs::path reference = box_reference(name + "_reference", solver);
+  const fs::path dir = fs::path(WASHOUT_TEST_OUTPUT_DIR) / name;
+  const auto first = stop_box_run(dir, solver, SIGTERM);
   ASSERT_EQ(first.status, 4) << first.output;
   const fs::path file = dir / "sinking_box_2d.h5";
-  const auto rest = test::run_washout(with(box_run("pcg_amg"), {"--restart", file.string()}),
+  const auto rest = test::run_washout(with(box_run(solver), {"--restart", file.string()}),
                                       (dir / "rest.log").string(), 120);
   ASSERT_EQ(rest.status, 0) << rest.output;
   const int from = continued_from(rest.output);
@@ -267,10 +269,18 @@ TEST(Restart, BodyInContactStoppedBySigtermAndRestartedIsTheUninterruptedRun) {
   EXPECT_LE(c.series_rows, 310u);
   EXPECT_EQ(test::read_text(reference / "box.csv"), test::read_text(dir / "box.csv"));
   std::printf(
-      "box (BoomerAMG PCG) stopped by SIGTERM, continued from frame %d: %d frames and %d series "
-      "bitwise "
+      "box (%s) stopped by SIGTERM, continued from frame %d: %d frames and %d series bitwise "
       "equal\n",
-      from, c.frames, c.series);
+      solver.c_str(), from, c.frames, c.series);
+}
+
+TEST(Restart, BodyInContactStoppedBySigtermAndRestartedIsTheUninterruptedRun) {
+  expect_sigterm_restart_is_uninterrupted("pcg_amg", "restart_box_sigterm");
+}
+
+// The aggregates' set-up serves 10 solves (4 a step here): it too must start afresh at a frame.
+TEST(Restart, BodyInContactWithTheAggregatesSolverRestartedIsTheUninterruptedRun) {
+  expect_sigterm_restart_is_uninterrupted("pcg_agg", "restart_box_sigterm_agg");
 }
 
 }  // namespace
