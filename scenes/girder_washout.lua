@@ -10,7 +10,7 @@ local flume = require("flume")
 
 local P = washout.parameters {
   dim = 3,
-  d0 = 0.02,              -- [assumption] default: about ten minutes on two cores; paper: 0.005
+  d0 = 0.02,              -- [assumption] default: about two minutes on two cores; paper: 0.005
   end_time = 1.5,         -- the girder is off the pier by about 0.85 s and 0.8 m downstream at
                           -- 1.5 s; the run also stops when it leaves the observation window
   output_interval = 0.05,
