@@ -52,16 +52,18 @@ double seconds_since(std::chrono::steady_clock::time_point start) {
 class AggregationPreconditioner final : public Preconditioner {
  public:
   void prepare(const CsrMatrix& A, bool same_matrix) override {
-    if (same_matrix && inverse_diagonal_.size() == A.rows) return;
+    if (same_matrix && rows_ == A.rows) return;
     const auto start = std::chrono::steady_clock::now();
     const double cpu_start = thread_cpu_seconds();
     // The aggregates and the coarse factor serve kReuseSolves matrices of one size (the rows are
-    // the fluid particles, numbered alike from step to step, simulation.cpp); the diagonal is
-    // each matrix's own. M stays symmetric positive definite whatever A it was built from.
+    // the fluid particles, numbered alike from step to step, simulation.cpp); the diagonal (the
+    // Jacobi preconditioner's) is each matrix's own. M stays symmetric positive definite whatever A
+    // it was built from.
     const bool reuse = rows_ == A.rows && uses_ < kReuseSolves && !stale_;
-    take_diagonal_and_strength(A);
+    jacobi_->prepare(A, false);
     auto& counters = solver_counters();
     if (!reuse) {
+      take_strength(A);
       aggregate(A);
       build_coarse(A);
       factor_coarse();
@@ -89,6 +91,7 @@ class AggregationPreconditioner final : public Preconditioner {
   void apply(const std::vector<double>& r, std::vector<double>& z) override {
     const std::size_t n = r.size();
     const bool parallel = n > kParallelRows;
+    const std::vector<double>& inverse_diagonal = *jacobi_->inverse_diagonal();
     z.resize(n);
     const auto m = static_cast<std::int64_t>(coarse_rows_);
     if (m > 0) {
@@ -105,27 +108,22 @@ class AggregationPreconditioner final : public Preconditioner {
 #pragma omp parallel for schedule(static) if (parallel)
     for (std::size_t i = 0; i < n; ++i) {
       const std::int32_t c = aggregate_of_[i];
-      z[i] = inverse_diagonal_[i] * r[i] + (c >= 0 ? coarse_solution_[c] : 0.0);
+      z[i] = inverse_diagonal[i] * r[i] + (c >= 0 ? coarse_solution_[c] : 0.0);
     }
   }
 
  private:
-  // D^-1, and the strength threshold of each row (kStrength times its largest off-diagonal
-  // magnitude; 0 for a row coupled to nothing).
-  void take_diagonal_and_strength(const CsrMatrix& A) {
+  // The strength threshold of each row: kStrength times its largest off-diagonal magnitude (0 for
+  // a row coupled to nothing). Needed by the aggregation only, so at a set-up only.
+  void take_strength(const CsrMatrix& A) {
     const std::size_t n = A.rows;
-    inverse_diagonal_.assign(n, 1.0);
     threshold_.assign(n, 0.0);
 #pragma omp parallel for schedule(static) if (n > kParallelRows)
     for (std::size_t i = 0; i < n; ++i) {
       double largest = 0.0;
-      for (std::int64_t k = A.row_start[i]; k < A.row_start[i + 1]; ++k) {
-        if (static_cast<std::size_t>(A.column[k]) == i) {
-          if (A.value[k] != 0.0) inverse_diagonal_[i] = 1.0 / A.value[k];
-        } else {
+      for (std::int64_t k = A.row_start[i]; k < A.row_start[i + 1]; ++k)
+        if (static_cast<std::size_t>(A.column[k]) != i)
           largest = std::max(largest, std::abs(A.value[k]));
-        }
-      }
       threshold_[i] = kStrength * largest;
     }
   }
@@ -294,7 +292,8 @@ class AggregationPreconditioner final : public Preconditioner {
     std::vector<std::int32_t> slot;  // where each coarse row sits in the column being filled
   };
 
-  std::vector<double> inverse_diagonal_, threshold_;
+  std::unique_ptr<Preconditioner> jacobi_ = make_jacobi_preconditioner();  // D^-1, each matrix's
+  std::vector<double> threshold_;
   std::vector<std::int32_t> aggregate_of_, member_start_, member_;
   std::size_t coarse_rows_ = 0, factor_nonzeros_ = 0, rows_ = 0;
   int uses_ = 0, fresh_iterations_ = -1;
