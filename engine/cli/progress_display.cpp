@@ -85,8 +85,13 @@ void print_summary(std::FILE* out, const Simulation& sim, const RunSummary& s) {
       "steps); %.3g fluid particle-steps/s\n",
       s.fluid_particles, s.boundary_particles, s.mean_active_boundary,
       s.wall_seconds > 0 ? particle_steps / s.wall_seconds : 0.0);
+  // "auto" resolves by the unknowns' count at each solve: name what it took at the last one.
+  const std::string& requested = sim.params().solver;
+  const std::string solver = requested == "auto" && !s.pressure_solver.empty()
+                                 ? "auto: " + s.pressure_solver + " at the last solve"
+                                 : requested;
   std::fprintf(out, "  pressure solve: %.1f iterations per step (%s)\n", s.mean_ppe_iterations,
-               sim.params().solver.c_str());
+               solver.c_str());
   std::fprintf(out, "  fluid particles found inside walls: %ld\n", s.wall_crossings);
   if (s.gap_relocations > 0)
     std::fprintf(out,

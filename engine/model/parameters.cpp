@@ -103,9 +103,9 @@ const std::vector<ParameterInfo>& ParameterSet::engine_table() {
        "pressure solver: \"cholmod\" (direct), \"pcg\" (Jacobi-preconditioned CG, warm-started), "
        "\"pcg_agg\" (CG preconditioned by Jacobi plus a coarse correction on aggregates of "
        "neighbouring particles, warm-started), \"pcg_amg\" (CG preconditioned by a BoomerAMG "
-       "V-cycle, warm-started), \"auto\" (2D: pcg_amg, but cholmod up to 1000 unknowns, and up "
-       "to 60000 where dynamic bodies are solved with the pressure; 3D: pcg_agg below 100000 "
-       "unknowns, pcg_amg from 100000; docs/performance.md)",
+       "V-cycle, warm-started), \"auto\" (pcg_agg below 100000 unknowns, pcg_amg from 100000; "
+       "but in 2D cholmod up to 1000 unknowns, and up to 60000 where dynamic bodies are solved "
+       "with the pressure; docs/performance.md)",
        d.solver},
       {"solver_tolerance", "-",
        "relative residual |b - Ax| / |b| at which pcg, pcg_agg and pcg_amg stop",

@@ -132,6 +132,7 @@ RunSummary Simulation::run(const std::vector<RunObserver*>& observers,
   summary.wall_seconds =
       std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   summary.mean_ppe_iterations = step_ > 0 ? double(total_ppe_iterations_) / step_ : 0.0;
+  summary.pressure_solver = last_solver_;
   summary.mean_active_boundary = step_ > 0 ? total_active_boundary_ / double(step_) : 0.0;
   summary.wall_crossings = wall_crossings_;
   summary.gap_relocations = gap_relocations_;

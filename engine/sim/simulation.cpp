@@ -374,6 +374,7 @@ void Simulation::solve_pressure(StepInProgress& now) {
   const std::string wanted = resolve_solver(prm.solver, prm.dim, now.ppe.unknowns, body_coupled_);
   if (!solver_ || solver_->name() != wanted)
     solver_ = make_solver(wanted, prm.solver_tolerance, prm.solver_max_iterations);
+  last_solver_ = wanted;
   gather_pressure_guess(particles_, work_);
   SolveReport solve;
   try {

@@ -65,6 +65,7 @@ struct RunSummary {
   double wall_seconds = 0.0;
   std::size_t fluid_particles = 0, boundary_particles = 0;
   double mean_ppe_iterations = 0.0;
+  std::string pressure_solver;  // the solver of the last pressure solve ("auto" resolved)
   // Boundary (wall, gate, body) particles within a fluid particle's support, the only ones the
   // step's marker, assembly and corrector work touches; a mean over the steps.
   double mean_active_boundary = 0.0;
@@ -211,6 +212,7 @@ class Simulation {
   std::vector<std::uint8_t> solved_bodies_;  // 1: a dynamic body, its velocity solved by coupling_
   bool body_coupled_ = false;  // dynamic bodies solved with the pressure (dynamic walls)
   std::unique_ptr<LinearSolver> solver_;
+  std::string last_solver_;  // kept for the summary: solver_ is dropped at every frame
   std::vector<MovingWall> moving_walls_;
   std::unique_ptr<RigidBodySystem> bodies_;
   std::vector<std::uint8_t> active_boundary_;

@@ -64,19 +64,16 @@ const SystemObserver& system_observer() { return observer; }
 std::string resolve_solver(const std::string& requested, int dim, std::size_t unknowns,
                            bool body_coupled) {
   if (requested != "auto") return requested;
-  // By the comparisons in docs/performance.md ("The default", "The twenty-fourth session"): in
-  // 2D BoomerAMG CG (3x faster than CHOLMOD at 3,200 unknowns, the same front to four digits),
-  // but CHOLMOD's exact solve for small systems coupled to dynamic bodies (their landing steps
-  // are sensitive to an inexact solve at 1e-6) and below 1,000 unknowns (a millisecond); in 3D CG
-  // with the aggregates' coarse correction (pcg_agg) below 100,000 unknowns, where its coarse
-  // system factorises in tens of milliseconds (it solved the same-case dam break 1.6-2.4 times as
-  // fast as Jacobi CG at 8,000 unknowns and as BoomerAMG CG at 64,000), and BoomerAMG CG from
-  // 100,000, where that factorisation grows too fast (1.5 s at 216,000 against 0.4 s for
-  // BoomerAMG's set-up). pcg_agg is faster in 2D as well, but moved the Lobovsky impact's impulse
-  // at Courant 0.1 from 0.610 to 0.710 (chaotic at that step: 0.61-0.71 over solvers and
-  // tolerances), so 2D keeps the solver its validated figures and tests were made with.
-  if (dim == 2)
-    return unknowns <= 1000 || (body_coupled && unknowns <= 60000) ? "cholmod" : "pcg_amg";
+  // By the comparisons in docs/performance.md ("The default", "The twenty-fourth session", "The
+  // twenty-fifth session"): CHOLMOD's exact solve in 2D for small systems coupled to dynamic
+  // bodies (their landing steps are sensitive to an inexact solve at 1e-6) and below 1,000
+  // unknowns (a millisecond); otherwise CG with the aggregates' coarse correction (pcg_agg) below
+  // 100,000 unknowns, where its coarse system factorises in tens of milliseconds (it solved the
+  // same-case 3D dam break 1.6-2.4 times as fast as Jacobi CG at 8,000 unknowns and as BoomerAMG
+  // CG at 64,000; the 2D Lobovsky run at H/60 in 0.7 of BoomerAMG CG's time), and BoomerAMG CG
+  // from 100,000, where that factorisation grows too fast (1.5 s at 216,000 against 0.4 s for
+  // BoomerAMG's set-up).
+  if (dim == 2 && (unknowns <= 1000 || (body_coupled && unknowns <= 60000))) return "cholmod";
   return unknowns < 100000 ? "pcg_agg" : "pcg_amg";
 }
 

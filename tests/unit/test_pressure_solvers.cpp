@@ -271,7 +271,9 @@ TEST(PressureSolvers, AutoPicksByDimensionAndSize) {
   EXPECT_EQ(resolve_solver("pcg", 2, 10, false), "pcg");
   EXPECT_EQ(resolve_solver("pcg_amg", 3, 10, true), "pcg_amg");
   EXPECT_EQ(resolve_solver("auto", 2, 1000, false), "cholmod");
-  EXPECT_EQ(resolve_solver("auto", 2, 3200, false), "pcg_amg");
+  EXPECT_EQ(resolve_solver("auto", 2, 3200, false), "pcg_agg");
+  EXPECT_EQ(resolve_solver("auto", 2, 99999, false), "pcg_agg");
+  EXPECT_EQ(resolve_solver("auto", 2, 100000, false), "pcg_amg");
   EXPECT_EQ(resolve_solver("auto", 2, 3200, true), "cholmod");
   EXPECT_EQ(resolve_solver("auto", 2, 1000000, true), "pcg_amg");
   EXPECT_EQ(resolve_solver("auto", 3, 500, false), "pcg_agg");
