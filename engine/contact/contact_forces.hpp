@@ -76,7 +76,9 @@ struct ContactWorkspace {
   int body_count = -1, wall_count = -1;
   std::vector<PairLaw> wall_law;  // [body * walls + wall]
   std::vector<PairLaw> pair_law;  // [a * bodies + b]
-  // Per body: contact particles in the world (from the last detection).
+  // Per body: contact particles in the world (from the last detection). Only the entries that
+  // detection and the loads read are current: all of a body that may meet another body or whose
+  // near list is rebuilt, otherwise those of its near lists (contact_forces.cpp).
   std::vector<rigid::Vec3Array> position, velocity;
   // Per body: tangential springs against walls, [wall * contact particles + particle].
   std::vector<rigid::Vec3Array> wall_spring;
@@ -90,6 +92,7 @@ struct ContactWorkspace {
   std::vector<int> pair_touching;  // [a * bodies + b]
   std::vector<BodyContactSummary> summary;
 
+  std::vector<double> wall_centre_distance;      // [body * walls + wall]: signed, this sub-step
   std::vector<std::uint8_t> involved;            // [body]: may meet another body
   std::vector<Eigen::Matrix3d> inertia_inverse;  // [body]: world frame, this sub-step
   ParticlePairGrid grid;

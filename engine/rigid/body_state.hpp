@@ -3,6 +3,8 @@
 // the quantities read from it: world inertia, momenta, energy, particle positions/velocities.
 #include <Eigen/Dense>
 #include <Eigen/Geometry>
+#include <cstdint>
+#include <span>
 
 #include "engine/core/vec3.hpp"
 #include "engine/rigid/body_model.hpp"
@@ -38,5 +40,10 @@ double kinetic_energy(const BodyModel& model, const BodyState& state);  // trans
 // are resized to match.
 void particle_positions(const BodyState& state, const Vec3Array& offset, Vec3Array& position);
 void particle_velocities(const BodyState& state, const Vec3Array& offset, Vec3Array& velocity);
+// The same two, for the particles listed in `which` only (the same bits as the whole-array
+// forms); position and velocity must already hold offset.size() entries.
+void particle_kinematics_of(const BodyState& state, const Vec3Array& offset,
+                            std::span<const std::int32_t> which, Vec3Array& position,
+                            Vec3Array& velocity);
 
 }  // namespace washout::rigid
