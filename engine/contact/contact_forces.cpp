@@ -4,6 +4,7 @@
 #include <cmath>
 #include <stdexcept>
 #include <tuple>
+#include <type_traits>
 #include <variant>
 
 namespace washout::contact {
@@ -62,11 +63,15 @@ void build_near_list(const Shape& shape, const BodyModel& model, const BodyState
   const double r = model.contact_radius;
   const double clear2 = clear_radius2(centre_distance, r, skin);
   near.particle.clear();
+  near.part_mask.clear();
   Vec3 normal;
   for (std::size_t i = 0; i < x.size(); ++i) {
     const Vec3 xi(x.x[i], x.y[i], x.z[i]);
     if ((xi - state.position).squaredNorm() > clear2 && shape.distance(xi, normal) - r < skin) {
       near.particle.push_back(static_cast<std::int32_t>(i));
+      // While the list holds, no particle has moved as far as `skin` (near_list_holds).
+      if constexpr (std::is_same_v<Shape, UnionWall>)
+        near.part_mask.push_back(shape.parts_within(xi, skin));
       continue;
     }
     spring.x[first + i] = spring.y[first + i] = spring.z[first + i] = 0.0;
@@ -119,13 +124,19 @@ void detect_wall_contacts(std::span<const BodyModel> models, std::span<const Bod
             // without its distance to the wall (a girder spanning the flume is always near
             // both side walls, but only its ends are).
             const double clear2 = clear_radius2(centre_distance, r, reach[b]);
-            for (const std::int32_t i : near.particle) {
+            for (std::size_t l = 0; l < near.particle.size(); ++l) {
+              const std::int32_t i = near.particle[l];
               const Vec3 xi(x.x[i], x.y[i], x.z[i]);
               if ((xi - state.position).squaredNorm() <= clear2) {
                 spring.x[first + i] = spring.y[first + i] = spring.z[first + i] = 0.0;
                 continue;
               }
-              const double gap = shape.distance(xi, normal) - r;
+              double distance;
+              if constexpr (std::is_same_v<std::decay_t<decltype(shape)>, UnionWall>)
+                distance = shape.distance(xi, normal, near.part_mask[l]);
+              else
+                distance = shape.distance(xi, normal);
+              const double gap = distance - r;
               const double overlap = -gap;
               if (overlap <= 0.0) {  // separated: the pair's tangential spring is reset
                 spring.x[first + i] = spring.y[first + i] = spring.z[first + i] = 0.0;

@@ -61,6 +61,8 @@ struct BodyContactSummary {
 // than skin - reach. Only the listed particles' distances are computed at each sub-step.
 struct NearWallList {
   std::vector<std::int32_t> particle;  // ascending
+  // For a UnionWall, per listed particle: the parts that can be its nearest while the list holds.
+  std::vector<UnionWall::Mask> part_mask;
   Vec3 position = Vec3::Zero();
   Eigen::Quaterniond orientation = Eigen::Quaterniond::Identity();
   double skin = -1.0;  // < 0: not built

@@ -7,21 +7,7 @@
 namespace washout::contact {
 namespace {
 
-// A sphere (3D only: a 2D sphere is a disc, an infinite cylinder along z).
-struct SphereObstacle {
-  Vec3 centre = Vec3::Zero();
-  double radius = 1.0;
-  double distance(const Vec3& x, Vec3& n) const {
-    const Vec3 d = x - centre;
-    const double r = d.norm();
-    n = r > 0.0 ? Vec3(d / r) : Vec3::UnitZ();
-    return r - radius;
-  }
-};
-
-using PrimitiveShape = std::variant<BoxObstacle, CylinderObstacle, SphereObstacle>;
-
-PrimitiveShape primitive_shape(const Primitive& p, int dim) {
+PrimitiveWall primitive_shape(const Primitive& p, int dim) {
   switch (p.type) {
     case Primitive::Type::Box: {
       BoxObstacle box;
@@ -59,25 +45,13 @@ PrimitiveShape primitive_shape(const Primitive& p, int dim) {
 }  // namespace
 
 WallShape wall_shape_from(const Shape& shape, int dim) {
-  std::vector<PrimitiveShape> parts;
+  std::vector<PrimitiveWall> parts;
   for (const Primitive& p : shape.parts()) parts.push_back(primitive_shape(p, dim));
   if (parts.size() == 1) {
     if (auto* box = std::get_if<BoxObstacle>(&parts[0])) return *box;
     if (auto* cylinder = std::get_if<CylinderObstacle>(&parts[0])) return *cylinder;
   }
-  auto shared = std::make_shared<const std::vector<PrimitiveShape>>(std::move(parts));
-  return SignedDistanceWall{[shared](const Vec3& x, Vec3* normal) {
-    double nearest = std::numeric_limits<double>::max();
-    Vec3 n;
-    for (const PrimitiveShape& part : *shared) {
-      const double d = std::visit([&](const auto& s) { return s.distance(x, n); }, part);
-      if (d < nearest) {
-        nearest = d;
-        *normal = n;
-      }
-    }
-    return nearest;
-  }};
+  return UnionWall{std::make_shared<const std::vector<PrimitiveWall>>(std::move(parts))};
 }
 
 }  // namespace washout::contact

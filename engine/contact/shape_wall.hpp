@@ -1,7 +1,7 @@
 #pragma once
 // The contact wall of a scene shape (a box, cylinder, sphere or a union of them). One primitive
 // becomes the matching plain struct (BoxObstacle, CylinderObstacle), so the particle loop has
-// no indirect call. A union becomes one SignedDistanceWall whose distance is the minimum over
+// no indirect call. A union becomes one UnionWall whose distance is the minimum over
 // its primitives and whose normal is that of the nearest one: a particle over the seam of two
 // touching boxes of one union (a floor made of two slabs) feels one contact, not two.
 #include "engine/contact/wall.hpp"

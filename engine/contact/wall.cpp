@@ -1,7 +1,9 @@
 #include "engine/contact/wall.hpp"
 
+#include <algorithm>
 #include <cmath>
 #include <limits>
+#include <vector>
 
 namespace washout::contact {
 namespace {
@@ -56,6 +58,37 @@ double CylinderObstacle::distance(const Vec3& x, Vec3& n) const {
   }
   n = axial_unit;
   return q_axial;
+}
+
+double UnionWall::distance(const Vec3& x, Vec3& n, Mask mask) const {
+  const bool every = parts->size() > 32;
+  double nearest = std::numeric_limits<double>::max();
+  Vec3 part_normal;
+  for (std::size_t k = 0; k < parts->size(); ++k) {
+    if (!every && !(mask >> k & 1u)) continue;
+    const double d =
+        std::visit([&](const auto& s) { return s.distance(x, part_normal); }, (*parts)[k]);
+    if (d < nearest) {
+      nearest = d;
+      n = part_normal;
+    }
+  }
+  return nearest;
+}
+
+UnionWall::Mask UnionWall::parts_within(const Vec3& x, double margin) const {
+  if (parts->size() > 32) return kAll;
+  std::vector<double> d(parts->size());
+  Vec3 n;
+  double nearest = std::numeric_limits<double>::max();
+  for (std::size_t k = 0; k < parts->size(); ++k) {
+    d[k] = std::visit([&](const auto& s) { return s.distance(x, n); }, (*parts)[k]);
+    nearest = std::min(nearest, d[k]);
+  }
+  Mask mask = 0;
+  for (std::size_t k = 0; k < parts->size(); ++k)
+    if (d[k] <= nearest + 2.0 * margin) mask |= Mask(1) << k;
+  return mask;
 }
 
 double signed_distance(const WallShape& shape, const Vec3& x, Vec3* normal) {

@@ -4,11 +4,15 @@
 // A smooth function instead of wall particles: a body slides on a flat wall without lattice
 // bumps. Penetration of a body particle of radius r at x: delta = r - sdf(x), normal grad sdf.
 // Shapes are plain structs; the per-particle loop is compiled once per shape type (std::visit
-// outside the loop), so there is no virtual call per particle except for SignedDistanceWall.
+// outside the loop), so there is no virtual call per particle except for SignedDistanceWall (a
+// union visits its parts).
 #include <Eigen/Dense>
+#include <cstdint>
 #include <functional>
+#include <memory>
 #include <string>
 #include <variant>
+#include <vector>
 
 #include "engine/core/vec3.hpp"
 
@@ -42,6 +46,38 @@ struct CylinderObstacle {
   double distance(const Vec3& x, Vec3& n) const;
 };
 
+// A sphere (3D only: a 2D sphere is a disc, an infinite cylinder along z).
+struct SphereObstacle {
+  Vec3 centre = Vec3::Zero();
+  double radius = 1.0;
+  double distance(const Vec3& x, Vec3& n) const {
+    const Vec3 d = x - centre;
+    const double r = d.norm();
+    n = r > 0.0 ? Vec3(d / r) : Vec3::UnitZ();
+    return r - radius;
+  }
+};
+
+using PrimitiveWall = std::variant<BoxObstacle, CylinderObstacle, SphereObstacle>;
+
+// A union of primitive solids (a flume's floor, side and end walls): sdf = the minimum over the
+// parts, the normal that of the nearest (the first of equals), so that a particle over the seam
+// of two touching parts feels one contact, not two. Each part's distance is exact, so it changes
+// by no more than the point moves: a part farther than the nearest by more than twice a margin
+// cannot be the nearest anywhere within that margin of the point. `parts_within` lists the
+// others as a mask, and `distance` over a mask gives the same value and normal as over all
+// parts for any point within the margin (contact_forces.cpp keeps such a mask per particle of a
+// near list: a girder's end beside one side wall tries that wall, not the five parts).
+struct UnionWall {
+  using Mask = std::uint32_t;
+  static constexpr Mask kAll = ~Mask(0);  // also what a union of more than 32 parts uses
+  std::shared_ptr<const std::vector<PrimitiveWall>> parts;
+
+  double distance(const Vec3& x, Vec3& n) const { return distance(x, n, kAll); }
+  double distance(const Vec3& x, Vec3& n, Mask mask) const;
+  Mask parts_within(const Vec3& x, double margin) const;
+};
+
 // Any signed distance: returns sdf(x) and writes the unit outward normal. This is how a
 // geometry Shape plugs in, e.g.
 //   SignedDistanceWall{[&shape, dim, eps](const Vec3& x, Vec3* n) {
@@ -51,7 +87,8 @@ struct SignedDistanceWall {
   double distance(const Vec3& x, Vec3& n) const { return function(x, &n); }
 };
 
-using WallShape = std::variant<PlaneWall, BoxObstacle, CylinderObstacle, SignedDistanceWall>;
+using WallShape =
+    std::variant<PlaneWall, BoxObstacle, CylinderObstacle, UnionWall, SignedDistanceWall>;
 
 struct Wall {
   std::string name;

@@ -3,7 +3,10 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <memory>
 #include <numbers>
+#include <random>
+#include <vector>
 
 #include "engine/contact/wall.hpp"
 
@@ -77,6 +80,50 @@ TEST(ContactWall, CustomSignedDistance) {
   Vec3 n;
   EXPECT_NEAR(signed_distance(sphere, Vec3(0, 3, 0), &n), 2.0, 1e-15);
   EXPECT_LT((n - Vec3::UnitY()).norm(), 1e-15);
+}
+
+// A flume as a union of five slabs (floor, two side walls, two end walls), 1 m x 0.4 m. Around
+// points near its floor-side corner and along its side walls, the distance over the parts the
+// mask keeps is the distance over all of them, value and normal to the bit, for every point
+// within the margin, and the mask drops the parts that cannot be nearest there.
+TEST(ContactWall, UnionWallMaskKeepsTheNearestPart) {
+  const auto slab = [](Vec3 lower, Vec3 upper) {
+    BoxObstacle box;
+    box.centre = 0.5 * (lower + upper);
+    box.half_size = 0.5 * (upper - lower);
+    return PrimitiveWall(box);
+  };
+  const double t = 0.02;  // slab thickness
+  const UnionWall flume{std::make_shared<const std::vector<PrimitiveWall>>(
+      std::vector{slab(Vec3(-t, -t, -t), Vec3(1 + t, 0.4 + t, 0)),      // floor
+                  slab(Vec3(-t, -t, -t), Vec3(1 + t, 0, 0.5)),          // side y = 0
+                  slab(Vec3(-t, 0.4, -t), Vec3(1 + t, 0.4 + t, 0.5)),   // side y = 0.4
+                  slab(Vec3(-t, -t, -t), Vec3(0, 0.4 + t, 0.5)),        // end x = 0
+                  slab(Vec3(1, -t, -t), Vec3(1 + t, 0.4 + t, 0.5))})};  // end x = 1
+  std::mt19937 random(7);
+  std::uniform_real_distribution<double> unit(-1.0, 1.0);
+  const double margin = 0.01;
+  int compared = 0;
+  for (const Vec3& centre : {Vec3(0.5, 0.012, 0.015), Vec3(0.5, 0.2, 0.011), Vec3(0.3, 0.39, 0.2),
+                             Vec3(0.005, 0.005, 0.005)}) {
+    const UnionWall::Mask mask = flume.parts_within(centre, margin);
+    EXPECT_NE(mask & 0x1fu, 0x1fu) << "no part dropped at " << centre.transpose();
+    for (int k = 0; k < 200; ++k) {
+      Vec3 offset(unit(random), unit(random), unit(random));
+      offset *= 0.999 * margin / std::max(1.0, offset.norm());
+      const Vec3 x = centre + offset;
+      Vec3 n_all, n_masked;
+      const double all = flume.distance(x, n_all);
+      const double masked = flume.distance(x, n_masked, mask);
+      EXPECT_EQ(all, masked) << "at " << x.transpose();
+      EXPECT_EQ(n_all, n_masked) << "at " << x.transpose();
+      ++compared;
+    }
+  }
+  // The side wall beside a point 12 mm from it and 15 mm above the floor: floor and that side
+  // only (the far side and the ends are more than twice the margin farther).
+  EXPECT_EQ(flume.parts_within(Vec3(0.5, 0.012, 0.015), margin), 0x3u);
+  EXPECT_EQ(compared, 800);
 }
 
 }  // namespace
