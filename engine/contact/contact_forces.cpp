@@ -325,14 +325,14 @@ void detect_contacts(std::span<const BodyModel> models, std::span<const BodyStat
     // lists of the walls in reach, which are all that detection and the loads read. A fixed or
     // prescribed body meets walls in no way, so it needs none unless it meets a body.
     bool every = ws.involved[b] != 0;
-    std::vector<const NearWallList*> lists;
+    const auto in_reach = [&](int slot) {
+      return ws.wall_centre_distance[slot] - model.bounding_radius < reach[b];
+    };
     for (int w = 0; w < ws.wall_count && is_dynamic(model); ++w) {
       const int slot = b * ws.wall_count + w;
-      const double centre_distance = signed_distance(scene.walls[w].shape, state.position);
-      ws.wall_centre_distance[slot] = centre_distance;
-      if (centre_distance - model.bounding_radius >= reach[b]) continue;
-      if (!near_list_holds(ws.near_wall[slot], model, state, reach[b])) every = true;
-      lists.push_back(&ws.near_wall[slot]);
+      ws.wall_centre_distance[slot] = signed_distance(scene.walls[w].shape, state.position);
+      if (in_reach(slot) && !near_list_holds(ws.near_wall[slot], model, state, reach[b]))
+        every = true;
     }
     if (every) {
       rigid::particle_positions(state, offset, ws.position[b]);
@@ -341,8 +341,12 @@ void detect_contacts(std::span<const BodyModel> models, std::span<const BodyStat
     }
     ws.position[b].resize(offset.size());
     ws.velocity[b].resize(offset.size());
-    for (const NearWallList* near : lists)
-      rigid::particle_kinematics_of(state, offset, near->particle, ws.position[b], ws.velocity[b]);
+    for (int w = 0; w < ws.wall_count && is_dynamic(model); ++w) {
+      const int slot = b * ws.wall_count + w;
+      if (in_reach(slot))
+        rigid::particle_kinematics_of(state, offset, ws.near_wall[slot].particle, ws.position[b],
+                                      ws.velocity[b]);
+    }
   }
   detect_wall_contacts(models, states, scene, reach, ws);
   detect_body_contacts(models, states, scene, reach, meeting, ws);

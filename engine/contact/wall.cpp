@@ -1,9 +1,9 @@
 #include "engine/contact/wall.hpp"
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <limits>
-#include <vector>
 
 namespace washout::contact {
 namespace {
@@ -61,13 +61,12 @@ double CylinderObstacle::distance(const Vec3& x, Vec3& n) const {
 }
 
 double UnionWall::distance(const Vec3& x, Vec3& n, Mask mask) const {
-  const bool every = parts->size() > 32;
+  const bool every = parts->size() > 32;  // no mask bit for parts past 32: all of them
   double nearest = std::numeric_limits<double>::max();
   Vec3 part_normal;
   for (std::size_t k = 0; k < parts->size(); ++k) {
     if (!every && !(mask >> k & 1u)) continue;
-    const double d =
-        std::visit([&](const auto& s) { return s.distance(x, part_normal); }, (*parts)[k]);
+    const double d = part_distance(k, x, part_normal);
     if (d < nearest) {
       nearest = d;
       n = part_normal;
@@ -78,11 +77,11 @@ double UnionWall::distance(const Vec3& x, Vec3& n, Mask mask) const {
 
 UnionWall::Mask UnionWall::parts_within(const Vec3& x, double margin) const {
   if (parts->size() > 32) return kAll;
-  std::vector<double> d(parts->size());
+  std::array<double, 32> d;
   Vec3 n;
   double nearest = std::numeric_limits<double>::max();
   for (std::size_t k = 0; k < parts->size(); ++k) {
-    d[k] = std::visit([&](const auto& s) { return s.distance(x, n); }, (*parts)[k]);
+    d[k] = part_distance(k, x, n);
     nearest = std::min(nearest, d[k]);
   }
   Mask mask = 0;

@@ -4,8 +4,8 @@
 // A smooth function instead of wall particles: a body slides on a flat wall without lattice
 // bumps. Penetration of a body particle of radius r at x: delta = r - sdf(x), normal grad sdf.
 // Shapes are plain structs; the per-particle loop is compiled once per shape type (std::visit
-// outside the loop), so there is no virtual call per particle except for SignedDistanceWall (a
-// union visits its parts).
+// outside the loop), so there is no virtual call per particle except for SignedDistanceWall
+// (a UnionWall visits its parts' variant).
 #include <Eigen/Dense>
 #include <cstdint>
 #include <functional>
@@ -76,6 +76,11 @@ struct UnionWall {
   double distance(const Vec3& x, Vec3& n) const { return distance(x, n, kAll); }
   double distance(const Vec3& x, Vec3& n, Mask mask) const;
   Mask parts_within(const Vec3& x, double margin) const;
+
+ private:
+  double part_distance(std::size_t k, const Vec3& x, Vec3& n) const {
+    return std::visit([&](const auto& s) { return s.distance(x, n); }, (*parts)[k]);
+  }
 };
 
 // Any signed distance: returns sdf(x) and writes the unit outward normal. This is how a
