@@ -114,58 +114,34 @@ void NeighborGrid::build_list(const Particles& particles, std::size_t query_coun
     if (periodic) periodic_.minimum_image(d);
     return (sj[k] != i) & (d[0] * d[0] + d[1] * d[1] + d[2] * d[2] < r2max);
   };
-  // One pass over the candidates: each block of kListBlock rows is written to its thread's
-  // buffer, and the blocks are then copied into place once the row counts give the offsets
-  // (two passes, count then fill, tested every candidate twice; the neighbour stage of the 3D
-  // same-case dam break at a/20 took 1.4 s with them, 1.1 s with one). Without periodic images the
-  // fill is free of branches per candidate (about a quarter of the candidates are neighbours, at
-  // random: a branch on each was mispredicted often): it writes every candidate and advances past
-  // the neighbours only.
+  // One pass over the candidates (row_blocks.hpp; a count pass and a fill pass tested every
+  // candidate twice: the neighbour stage of the 3D same-case dam break at a/20 took 1.4 s with
+  // them, 1.1 s with one). Without periodic images the fill is free of branches per candidate
+  // (about a quarter of the candidates are neighbours, at random: a branch on each was
+  // mispredicted often): it writes every candidate and advances past the neighbours only.
   list.offset.assign(query_count + 1, 0);
-  const std::size_t blocks = (query_count + kListBlock - 1) / kListBlock;
-  block_start_.assign(blocks, 0);
-  int threads = 1;
-#pragma omp parallel
-  {
-#pragma omp single
-    {
-      threads = omp_get_num_threads();
-      if (static_cast<int>(list_buffers_.size()) < threads) list_buffers_.resize(threads);
+  list_blocks_.fill(query_count, [&](std::size_t first, std::size_t last, auto& out) {
+    for (std::size_t i = first; i < last; ++i) {
+      if (retired(particles, i)) continue;
+      const double p[3] = {X[0][i], X[1][i], X[2][i]};
+      const std::size_t row_start = out.filled();
+      for_each_cell_around(p, [&](std::uint32_t begin, std::uint32_t end) {
+        std::uint32_t* row = out.reserve(end - begin);
+        std::size_t c = 0;
+        for (std::uint32_t k = begin; k < end; ++k) {
+          row[c] = sj[k];
+          c += inside(i, p, k);
+        }
+        out.advance(c);
+      });
+      list.offset[i + 1] = out.filled() - row_start;
     }
-    std::vector<std::uint32_t>& buffer = list_buffers_[omp_get_thread_num()];
-    std::size_t filled = 0;
-#pragma omp for schedule(static, 1)
-    for (std::size_t b = 0; b < blocks; ++b) {
-      block_start_[b] = filled;
-      const std::size_t last = std::min(query_count, (b + 1) * kListBlock);
-      for (std::size_t i = b * kListBlock; i < last; ++i) {
-        if (retired(particles, i)) continue;
-        const double p[3] = {X[0][i], X[1][i], X[2][i]};
-        const std::size_t row_start = filled;
-        for_each_cell_around(p, [&](std::uint32_t begin, std::uint32_t end) {
-          if (buffer.size() < filled + (end - begin)) buffer.resize(2 * (filled + (end - begin)));
-          std::uint32_t* out = buffer.data() + filled;
-          std::size_t c = 0;
-          for (std::uint32_t k = begin; k < end; ++k) {
-            out[c] = sj[k];
-            c += inside(i, p, k);
-          }
-          filled += c;
-        });
-        list.offset[i + 1] = filled - row_start;
-      }
-    }
-  }
+  });
   for (std::size_t i = 0; i < query_count; ++i) list.offset[i + 1] += list.offset[i];
-  list.index.resize(list.offset[query_count]);
-  // Block b was filled by thread b % threads (the static schedule above, one block at a time).
-#pragma omp parallel for schedule(static, 1) num_threads(threads)
-  for (std::size_t b = 0; b < blocks; ++b) {
-    const std::size_t first = b * kListBlock, last = std::min(query_count, first + kListBlock);
-    const std::uint32_t* from = list_buffers_[b % threads].data() + block_start_[b];
-    std::copy(from, from + (list.offset[last] - list.offset[first]),
-              list.index.begin() + static_cast<std::ptrdiff_t>(list.offset[first]));
-  }
+  list.index.resize(list_blocks_.entries());
+  list_blocks_.place([&](const std::uint32_t* from, std::size_t count, std::size_t to) {
+    std::copy(from, from + count, list.index.begin() + static_cast<std::ptrdiff_t>(to));
+  });
 }
 
 }  // namespace washout

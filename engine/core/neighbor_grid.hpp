@@ -12,6 +12,7 @@
 
 #include "engine/core/particles.hpp"
 #include "engine/core/periodic_box.hpp"
+#include "engine/core/row_blocks.hpp"
 
 namespace washout {
 
@@ -62,10 +63,7 @@ class NeighborGrid {
   std::vector<std::uint32_t> sorted_;      // particle indices ordered by cell
   std::vector<std::uint32_t> cell_of_;     // cell of each particle
   std::array<std::vector<double>, 3> sorted_position_;  // x, y, z of sorted_[k] at [a][k]
-  // build_list's work space, kept between builds (no allocation, no first touch per step).
-  static constexpr std::size_t kListBlock = 512;  // rows per block of the one-pass build
-  mutable std::vector<std::vector<std::uint32_t>> list_buffers_;  // one per thread
-  mutable std::vector<std::size_t> block_start_;  // block b's start in its thread's buffer
+  mutable RowBlocks<std::uint32_t> list_blocks_;        // build_list's work space, kept
 };
 
 template <class VisitCell>
