@@ -37,7 +37,9 @@ class RowBlocks {
   class RowAppender {
    public:
     Entry* reserve(std::size_t count) {
-      if (buffer_.size() < filled_ + count) buffer_.resize(2 * (filled_ + count));
+      // A quarter more than asked: a few growths in a run's first steps, and little memory held
+      // beyond the list itself (doubling held up to twice it: 400 MB at 2.6 M particles).
+      if (buffer_.size() < filled_ + count) buffer_.resize((filled_ + count) * 5 / 4 + 64);
       return buffer_.data() + filled_;
     }
     void advance(std::size_t count) { filled_ += count; }  // the reserved entries now written
