@@ -20,6 +20,7 @@
 #include <cstddef>
 #include <cstdint>
 
+#include "engine/core/dimension.hpp"
 #include "engine/core/neighbor_grid.hpp"
 #include "engine/core/sph_context.hpp"
 
@@ -86,10 +87,13 @@ inline void for_each_neighbor(const SphContext& ctx, const NeighborList& list, c
 template <class Value>
 inline void difference_gradient(const SphContext& ctx, const NeighborList& list, const Particles& p,
                                 std::size_t i, double f_i, Value&& value, double grad[3]) {
-  grad[0] = grad[1] = grad[2] = 0.0;
-  for_each_neighbor(ctx, list, p, i, [&](const NeighborPair& q) {
-    const double f = ctx.gradient_weight(q.r) * (value(q) - f_i);
-    for (int a = 0; a < ctx.dim; ++a) grad[a] += f * q.d[a];
+  with_dimension(ctx.dim, [&](auto dim) {
+    double sum[3] = {0, 0, 0};
+    for_each_neighbor(ctx, list, p, i, [&](const NeighborPair& q) {
+      const double f = ctx.gradient_weight(q.r) * (value(q) - f_i);
+      for (int a = 0; a < dim; ++a) sum[a] += f * q.d[a];
+    });
+    for (int a = 0; a < 3; ++a) grad[a] = sum[a];
   });
 }
 
@@ -99,10 +103,13 @@ template <class Value, class PairScale>
 inline void symmetric_gradient(const SphContext& ctx, const NeighborList& list, const Particles& p,
                                std::size_t i, double f_i, Value&& value, PairScale&& pair_scale,
                                double grad[3]) {
-  grad[0] = grad[1] = grad[2] = 0.0;
-  for_each_neighbor(ctx, list, p, i, [&](const NeighborPair& q) {
-    const double f = ctx.symmetric_gradient_weight(q.r) * pair_scale(q) * (value(q) + f_i);
-    for (int a = 0; a < ctx.dim; ++a) grad[a] += f * q.d[a];
+  with_dimension(ctx.dim, [&](auto dim) {
+    double sum[3] = {0, 0, 0};
+    for_each_neighbor(ctx, list, p, i, [&](const NeighborPair& q) {
+      const double f = ctx.symmetric_gradient_weight(q.r) * pair_scale(q) * (value(q) + f_i);
+      for (int a = 0; a < dim; ++a) sum[a] += f * q.d[a];
+    });
+    for (int a = 0; a < 3; ++a) grad[a] = sum[a];
   });
 }
 template <class Value>
@@ -116,14 +123,16 @@ inline void symmetric_gradient(const SphContext& ctx, const NeighborList& list, 
 template <class Value>
 inline double divergence(const SphContext& ctx, const NeighborList& list, const Particles& p,
                          std::size_t i, const double u_i[3], Value&& value) {
-  double div = 0.0;
-  for_each_neighbor(ctx, list, p, i, [&](const NeighborPair& q) {
-    double u_j[3] = {0, 0, 0};
-    value(q, u_j);
-    const double f = ctx.gradient_weight(q.r);
-    for (int a = 0; a < ctx.dim; ++a) div += f * q.d[a] * (u_j[a] - u_i[a]);
+  return with_dimension(ctx.dim, [&](auto dim) {
+    double div = 0.0;
+    for_each_neighbor(ctx, list, p, i, [&](const NeighborPair& q) {
+      double u_j[3] = {0, 0, 0};
+      value(q, u_j);
+      const double f = ctx.gradient_weight(q.r);
+      for (int a = 0; a < dim; ++a) div += f * q.d[a] * (u_j[a] - u_i[a]);
+    });
+    return div;
   });
-  return div;
 }
 
 // <lap f>_i, Brookshaw's form of METHOD.md. value(pair) is f_j.

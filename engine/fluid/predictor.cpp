@@ -14,25 +14,29 @@ void predict_velocity(const SphContext& ctx, const NeighborList& list, const Par
   const std::size_t n = p.fluid_count;
   for (int a = 0; a < 3; ++a) work.u_star[a].resize(n);
   const bool turbulent = !work.eddy_viscosity.empty();
+  with_dimension(ctx.dim, [&](auto dim) {
 #pragma omp parallel for schedule(static)
-  for (std::size_t i = 0; i < n; ++i) {
-    double lap[3] = {0, 0, 0};
-    const double nu_t_i = turbulent ? work.eddy_viscosity[i] : 0.0;
-    for_each_neighbor(ctx, list, p, i, [&](const NeighborPair& q) {
-      const bool fluid = q.j < n;
-      double weight = ctx.laplacian_weight(q.r, q.r2);
-      if (turbulent)
-        weight *= viscosity + 0.5 * (nu_t_i + (fluid ? work.eddy_viscosity[q.j] : nu_t_i));
-      else
-        weight *= viscosity;
-      for (int a = 0; a < ctx.dim; ++a) {
-        const double uj = fluid ? p.velocity[a][q.j] : work.boundary.marker_velocity[a][q.j];
-        lap[a] += weight * (p.velocity[a][i] - uj);
-      }
-    });
-    for (int a = 0; a < 3; ++a)
-      work.u_star[a][i] = a < ctx.dim ? p.velocity[a][i] + dt * (lap[a] + gravity[a]) : 0.0;
-  }
+    for (std::size_t i = 0; i < n; ++i) {
+      double lap[3] = {0, 0, 0};
+      double u_i[3] = {0, 0, 0};
+      for (int a = 0; a < dim; ++a) u_i[a] = p.velocity[a][i];
+      const double nu_t_i = turbulent ? work.eddy_viscosity[i] : 0.0;
+      for_each_neighbor(ctx, list, p, i, [&](const NeighborPair& q) {
+        const bool fluid = q.j < n;
+        double weight = ctx.laplacian_weight(q.r, q.r2);
+        if (turbulent)
+          weight *= viscosity + 0.5 * (nu_t_i + (fluid ? work.eddy_viscosity[q.j] : nu_t_i));
+        else
+          weight *= viscosity;
+        for (int a = 0; a < dim; ++a) {
+          const double uj = fluid ? p.velocity[a][q.j] : work.boundary.marker_velocity[a][q.j];
+          lap[a] += weight * (u_i[a] - uj);
+        }
+      });
+      for (int a = 0; a < 3; ++a)
+        work.u_star[a][i] = a < dim ? u_i[a] + dt * (lap[a] + gravity[a]) : 0.0;
+    }
+  });
 }
 
 }  // namespace washout

@@ -11,25 +11,30 @@ void compute_eddy_viscosity(const SphContext& ctx, const NeighborList& list, con
   const std::size_t n = p.fluid_count;
   work.eddy_viscosity.assign(n, 0.0);
   const double length2 = std::pow(smagorinsky_constant * ctx.d0, 2);
+  with_dimension(ctx.dim, [&](auto dim) {
+    constexpr int D = dim;
 #pragma omp parallel for schedule(static)
-  for (std::size_t i = 0; i < n; ++i) {
-    double grad[3][3] = {{0, 0, 0}, {0, 0, 0}, {0, 0, 0}};  // grad[a][b] = d u_a / d x_b
-    for_each_neighbor(ctx, list, p, i, [&](const NeighborPair& q) {
-      const double f = ctx.gradient_weight(q.r);
-      for (int a = 0; a < ctx.dim; ++a) {
-        const double uj = q.j < n ? p.velocity[a][q.j] : work.boundary.marker_velocity[a][q.j];
-        const double du = uj - p.velocity[a][i];
-        for (int b = 0; b < ctx.dim; ++b) grad[a][b] += du * f * q.d[b];
-      }
-    });
-    double ss = 0.0;
-    for (int a = 0; a < ctx.dim; ++a)
-      for (int b = 0; b < ctx.dim; ++b) {
-        const double s = 0.5 * (grad[a][b] + grad[b][a]);
-        ss += s * s;
-      }
-    work.eddy_viscosity[i] = length2 * std::sqrt(2.0 * ss);
-  }
+    for (std::size_t i = 0; i < n; ++i) {
+      double grad[D][D] = {};  // grad[a][b] = d u_a / d x_b
+      double u_i[D];
+      for (int a = 0; a < D; ++a) u_i[a] = p.velocity[a][i];
+      for_each_neighbor(ctx, list, p, i, [&](const NeighborPair& q) {
+        const double f = ctx.gradient_weight(q.r);
+        for (int a = 0; a < D; ++a) {
+          const double uj = q.j < n ? p.velocity[a][q.j] : work.boundary.marker_velocity[a][q.j];
+          const double du = uj - u_i[a];
+          for (int b = 0; b < D; ++b) grad[a][b] += du * f * q.d[b];
+        }
+      });
+      double ss = 0.0;
+      for (int a = 0; a < D; ++a)
+        for (int b = 0; b < D; ++b) {
+          const double s = 0.5 * (grad[a][b] + grad[b][a]);
+          ss += s * s;
+        }
+      work.eddy_viscosity[i] = length2 * std::sqrt(2.0 * ss);
+    }
+  });
 }
 
 }  // namespace washout
