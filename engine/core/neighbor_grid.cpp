@@ -1,7 +1,5 @@
 #include "engine/core/neighbor_grid.hpp"
 
-#include <omp.h>
-
 #include <algorithm>
 #include <cmath>
 #include <limits>

@@ -1,9 +1,9 @@
 #pragma once
-// Compressed rows (a neighbour list, the PPE's matrix) built in one parallel pass over their
-// data. The rows are dealt in blocks of kRowsPerBlock, block b to thread b % threads (a static
-// schedule of one block at a time); each thread appends its blocks' entries to its own buffer
-// and the row lengths to the caller's row array. Once the lengths are known, each block's
-// entries are copied to their place, which is the sum of the blocks before it. A count pass and
+// Compressed rows (the neighbour list) built in one parallel pass over their data. The rows are
+// dealt in blocks of kRowsPerBlock, block b to thread b % threads (a static schedule of one
+// block at a time); each thread appends its blocks' entries to its own buffer, and the caller
+// records the row lengths. Once the lengths are known, each block's entries are copied to their
+// place, which is the sum of the blocks before it. A count pass and
 // a fill pass would take every row's data twice; this takes it once and copies the entries,
 // and the result is the same whatever the number of threads. The buffers are kept from build to
 // build: no allocation and no first touch of memory in a time step once they have grown.
@@ -21,12 +21,12 @@ class RowBlocks {
   static constexpr std::size_t kRowsPerBlock = 512;
 
   // fill(first, last, out) appends the entries of rows [first, last) through out (RowAppender)
-  // and records their lengths itself.
+  // and records the rows' lengths where the caller keeps them.
   template <class Fill>
   void fill(std::size_t rows, Fill&& fill);
 
   // The entries filled, all blocks together.
-  std::size_t entries() const { return entries_; }
+  std::size_t entries() const { return destination_.empty() ? 0 : destination_.back(); }
 
   // place(from, count, to) moves count entries from `from` to the output's positions
   // [to, to + count), for every block.
@@ -56,8 +56,7 @@ class RowBlocks {
  private:
   std::vector<std::vector<Entry>> buffers_;  // one per thread
   std::vector<std::size_t> start_, length_;  // block b: first entry in its thread's buffer, count
-  std::vector<std::size_t> destination_;     // block b's first entry in the output
-  std::size_t entries_ = 0;
+  std::vector<std::size_t> destination_;     // [blocks + 1]: block b's first entry in the output
   int threads_ = 1;
 };
 
@@ -80,17 +79,14 @@ void RowBlocks<Entry>::fill(std::size_t rows, Fill&& fill) {
       length_[b] = out.filled() - start_[b];
     }
   }
-  entries_ = 0;
-  for (std::size_t length : length_) entries_ += length;
+  destination_.assign(blocks + 1, 0);
+  for (std::size_t b = 0; b < blocks; ++b) destination_[b + 1] = destination_[b] + length_[b];
 }
 
 template <class Entry>
 template <class Place>
 void RowBlocks<Entry>::place(Place&& place) {
-  destination_.assign(length_.size() + 1, 0);
-  for (std::size_t b = 0; b < length_.size(); ++b)
-    destination_[b + 1] = destination_[b] + length_[b];
-    // The same deal of blocks to threads as fill()'s: block b is in buffer b % threads.
+  // The same deal of blocks to threads as fill()'s: block b is in buffer b % threads.
 #pragma omp parallel for schedule(static, 1) num_threads(threads_)
   for (std::size_t b = 0; b < length_.size(); ++b)
     place(buffers_[b % static_cast<std::size_t>(threads_)].data() + start_[b], length_[b],

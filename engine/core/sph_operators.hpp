@@ -83,18 +83,28 @@ inline void for_each_neighbor(const SphContext& ctx, const NeighborList& list, c
   }
 }
 
+// sum_j factor(pair) r_ij over i's neighbours, into out: both gradients' shape. The sum stays in
+// registers for the walk (with_dimension).
+template <class PairFactor>
+inline void sum_over_pairs(const SphContext& ctx, const NeighborList& list, const Particles& p,
+                           std::size_t i, PairFactor&& factor, double out[3]) {
+  with_dimension(ctx.dim, [&](auto dim) {
+    double sum[3] = {0, 0, 0};
+    for_each_neighbor(ctx, list, p, i, [&](const NeighborPair& q) {
+      const double f = factor(q);
+      for (int a = 0; a < dim; ++a) sum[a] += f * q.d[a];
+    });
+    for (int a = 0; a < 3; ++a) out[a] = sum[a];
+  });
+}
+
 // <grad f>_i, difference form. value(pair) is f_j.
 template <class Value>
 inline void difference_gradient(const SphContext& ctx, const NeighborList& list, const Particles& p,
                                 std::size_t i, double f_i, Value&& value, double grad[3]) {
-  with_dimension(ctx.dim, [&](auto dim) {
-    double sum[3] = {0, 0, 0};
-    for_each_neighbor(ctx, list, p, i, [&](const NeighborPair& q) {
-      const double f = ctx.gradient_weight(q.r) * (value(q) - f_i);
-      for (int a = 0; a < dim; ++a) sum[a] += f * q.d[a];
-    });
-    for (int a = 0; a < 3; ++a) grad[a] = sum[a];
-  });
+  sum_over_pairs(
+      ctx, list, p, i,
+      [&](const NeighborPair& q) { return ctx.gradient_weight(q.r) * (value(q) - f_i); }, grad);
 }
 
 // <grad f>_i, symmetric (momentum-conserving) form. value(pair) is f_j; pair_scale(pair) a factor
@@ -103,14 +113,12 @@ template <class Value, class PairScale>
 inline void symmetric_gradient(const SphContext& ctx, const NeighborList& list, const Particles& p,
                                std::size_t i, double f_i, Value&& value, PairScale&& pair_scale,
                                double grad[3]) {
-  with_dimension(ctx.dim, [&](auto dim) {
-    double sum[3] = {0, 0, 0};
-    for_each_neighbor(ctx, list, p, i, [&](const NeighborPair& q) {
-      const double f = ctx.symmetric_gradient_weight(q.r) * pair_scale(q) * (value(q) + f_i);
-      for (int a = 0; a < dim; ++a) sum[a] += f * q.d[a];
-    });
-    for (int a = 0; a < 3; ++a) grad[a] = sum[a];
-  });
+  sum_over_pairs(
+      ctx, list, p, i,
+      [&](const NeighborPair& q) {
+        return ctx.symmetric_gradient_weight(q.r) * pair_scale(q) * (value(q) + f_i);
+      },
+      grad);
 }
 template <class Value>
 inline void symmetric_gradient(const SphContext& ctx, const NeighborList& list, const Particles& p,
