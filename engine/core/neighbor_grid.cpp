@@ -6,6 +6,8 @@
 #include <stdexcept>
 #include <string>
 
+#include "engine/core/vector_growth.hpp"
+
 namespace washout {
 namespace {
 
@@ -136,7 +138,7 @@ void NeighborGrid::build_list(const Particles& particles, std::size_t query_coun
     }
   });
   for (std::size_t i = 0; i < query_count; ++i) list.offset[i + 1] += list.offset[i];
-  list.index.resize(list_blocks_.entries());
+  grow_to(list.index, list_blocks_.entries());
   list_blocks_.place([&](const std::uint32_t* from, std::size_t count, std::size_t to) {
     std::copy(from, from + count, list.index.begin() + static_cast<std::ptrdiff_t>(to));
   });

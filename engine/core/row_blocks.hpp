@@ -13,6 +13,8 @@
 #include <cstddef>
 #include <vector>
 
+#include "engine/core/vector_growth.hpp"
+
 namespace washout {
 
 template <class Entry>
@@ -39,7 +41,7 @@ class RowBlocks {
     Entry* reserve(std::size_t count) {
       // A quarter more than asked: a few growths in a run's first steps, and little memory held
       // beyond the list itself (doubling held up to twice it: 400 MB at 2.6 M particles).
-      if (buffer_.size() < filled_ + count) buffer_.resize((filled_ + count) * 5 / 4 + 64);
+      if (buffer_.size() < filled_ + count) grow_to(buffer_, (filled_ + count) * 5 / 4 + 64);
       return buffer_.data() + filled_;
     }
     void advance(std::size_t count) { filled_ += count; }  // the reserved entries now written

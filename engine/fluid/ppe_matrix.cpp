@@ -22,6 +22,7 @@
 #include <algorithm>
 
 #include "engine/core/sph_operators.hpp"
+#include "engine/core/vector_growth.hpp"
 #include "engine/fluid/pressure_poisson_parts.hpp"
 
 namespace washout {
@@ -61,8 +62,8 @@ void assemble_ppe_matrix(const SphContext& ctx, const NeighborList& list, const 
     A.row_start[row + 1] = count;
   }
   for (std::size_t r = 0; r < rows; ++r) A.row_start[r + 1] += A.row_start[r];
-  A.column.resize(A.row_start[rows]);
-  A.value.resize(A.row_start[rows]);
+  grow_to(A.column, static_cast<std::size_t>(A.row_start[rows]));
+  grow_to(A.value, static_cast<std::size_t>(A.row_start[rows]));
 
 #pragma omp parallel for schedule(static)
   for (std::size_t i = 0; i < n; ++i) {
