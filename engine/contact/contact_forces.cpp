@@ -7,6 +7,8 @@
 #include <type_traits>
 #include <variant>
 
+#include "engine/contact/contact_stiffness.hpp"
+
 namespace washout::contact {
 namespace {
 
@@ -17,11 +19,10 @@ using rigid::MotionKind;
 bool is_dynamic(const BodyModel& model) { return model.motion == MotionKind::kDynamic; }
 
 // 1/m_eff of a unit impulse along n at offset r from X: 1/M + (r x n) . I^-1 (r x n).
-// Summed over contacts times their stiffness, this bounds the largest eigenvalue of the body's
-// contact stiffness over its mass matrix (the trace of a positive semidefinite matrix bounds
-// its largest eigenvalue), whatever the number and placement of the touching particles.
-// Inlined, with 1/M taken once per body: every near particle of every sub-step calls it, and out
-// of line it was 29 % of the sub-steps of the paper-resolution girder (bench_contact).
+// Summed over contacts times their stiffness, this is the trace of the body's contact
+// stiffness over its mass matrix, which bounds its largest eigenvalue whatever the number and
+// placement of the touching particles: the bound the contacts between bodies add (a pair
+// couples two bodies' coordinates). The walls' contacts take the tighter ContactStiffness.
 [[gnu::always_inline]] inline double inverse_effective_mass(double inverse_mass,
                                                             const Eigen::Matrix3d& inertia_inverse,
                                                             const Vec3& r, const Vec3& n) {
@@ -99,6 +100,7 @@ void detect_wall_contacts(std::span<const BodyModel> models, std::span<const Bod
     const rigid::Vec3Array& x = ws.position[b];
     const std::size_t n = x.size();
     BodyContactSummary& summary = ws.summary[b];
+    ContactStiffness stiffness;  // of the near wall contacts, all walls
     for (int w = 0; w < walls; ++w) {
       const int slot = b * walls + w;
       rigid::Vec3Array& spring = ws.wall_spring[b];
@@ -152,9 +154,8 @@ void detect_wall_contacts(std::span<const BodyModel> models, std::span<const Bod
               }
               ws.wall_candidates.push_back({b, w, i, overlap, normal});
               if (overlap > 0.0) ++touching;
-              summary.frequency2 += step_stiffness(law, overlap, reference * r) *
-                                    inverse_effective_mass(inverse_mass, inertia_inverse,
-                                                           xi - state.position, normal);
+              stiffness.add(step_stiffnesses(law, overlap, reference * r), normal,
+                            xi - state.position);
               ++summary.near;
             }
           },
@@ -163,6 +164,7 @@ void detect_wall_contacts(std::span<const BodyModel> models, std::span<const Bod
       summary.touching += touching;
       if (touching > 0) ws.wall_spring_used[slot] = 1;
     }
+    summary.frequency2 += stiffness.largest_frequency2(inverse_mass, inertia_inverse);
   }
 }
 

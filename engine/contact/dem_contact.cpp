@@ -32,6 +32,13 @@ double step_stiffness(const PairLaw& law, double overlap, double reference_overl
   return std::max(1.5 * law.normal_stiffness, law.tangential_stiffness) * root;
 }
 
+StepStiffness step_stiffnesses(const PairLaw& law, double overlap, double reference_overlap) {
+  const double tangential = law.friction > 0.0 ? law.tangential_stiffness : 0.0;
+  if (law.law == ContactLaw::kLinear) return {law.normal_stiffness, tangential};
+  const double root = std::sqrt(std::max(overlap, reference_overlap));
+  return {1.5 * law.normal_stiffness * root, tangential * root};
+}
+
 bool touches_during_step(double overlap, double overlap_rate, double dt) {
   return overlap > 0.0 || overlap + dt * overlap_rate > 0.0;
 }

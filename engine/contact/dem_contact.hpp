@@ -56,6 +56,13 @@ PairLaw make_pair_law(const ContactSettings& settings, double radius, const Mate
 // max(delta, reference) for Hertz: what limits the explicit step.
 double step_stiffness(const PairLaw& law, double overlap, double reference_overlap);
 
+// The normal and the tangential stiffness of one contact, each linearised as above; the
+// tangential one is 0 without friction, where the Coulomb cap holds the tangential force at 0.
+struct StepStiffness {
+  double normal = 0.0, tangential = 0.0;
+};
+StepStiffness step_stiffnesses(const PairLaw& law, double overlap, double reference_overlap);
+
 // One contact at the start of a step. overlap delta (> 0 in contact; <= 0 for a near pair that
 // may touch within the step); normal n points from the partner into this particle;
 // overlap_rate = d(delta)/dt = -(u_rel . n); tangential_velocity = the tangential part of u_rel

@@ -87,8 +87,11 @@ double tolerance(double eps, double steps) {
 }
 
 // Linear spring-dashpot, default settings (20 steps per contact), sphere (3D) and disc (2D):
-// measured restitution within the budget above; at 80 steps per contact within 1 % (the
-// budget there is 0.5-2 %, measured below 1 %: the law converges to the analytic value).
+// measured restitution within the budget above, and at 80 steps per contact within that
+// step's budget (0.5-1.7 %): the law converges to the analytic value. (Measured below 1 % at 80
+// while the sub-step took the trace of the contact stiffness, whose largest mode it
+// overestimated; with the bound of contact_stiffness.hpp eps = 0.3 measures 1.01 % in 2D and
+// 1.05 % in 3D against 1.73 %.)
 TEST(ContactBounce, RestitutionMatchesEpsIn2DAnd3D) {
   for (int dim : {2, 3}) {
     for (double eps : {0.3, 0.5, 0.8, 0.95}) {
@@ -102,7 +105,7 @@ TEST(ContactBounce, RestitutionMatchesEpsIn2DAnd3D) {
           dim, eps, r.restitution, r.restitution / eps - 1, tolerance(eps, 20), r.most_substeps,
           r.touching, f.restitution, f.restitution / eps - 1);
       EXPECT_NEAR(r.restitution / eps, 1.0, tolerance(eps, 20));
-      EXPECT_NEAR(f.restitution / eps, 1.0, 0.01);
+      EXPECT_NEAR(f.restitution / eps, 1.0, tolerance(eps, 80));
       EXPECT_GT(r.touching, 1);  // the lattice ball lands on a flat layer of particles
     }
   }
