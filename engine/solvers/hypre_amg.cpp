@@ -20,6 +20,7 @@
 #include <algorithm>
 #include <chrono>
 #include <climits>
+#include <cstdint>
 #include <cstdlib>
 #include <mutex>
 #include <string>
@@ -119,6 +120,41 @@ hypre_ParCSRMatrix* to_parcsr(const CsrMatrix& A) {
   return M;
 }
 
+// A one-rank ParCSR matrix that borrows A's columns and values, when every row already holds
+// its diagonal first (as the PPE assembly writes it, engine/fluid/ppe_matrix.cpp): hypre owns
+// only its 32-bit row starts (its data-owner flag is off, so destroying it leaves A's arrays),
+// where to_parcsr copied the whole matrix (600 MB and about 0.03 s a step at the paper's
+// resolution). nullptr for a matrix in another order, which takes the copy. The borrowed arrays
+// must not move while hypre reads them: each prepare() makes a new one for its matrix, and
+// hypre reads the set-up's only during the set-up (its V-cycle takes each solve's matrix as
+// level 0). The same bits as the copy, and BoomerAMG leaves the borrowed arrays as they were
+// (tests/unit/test_pressure_solvers.cpp, AmgBorrowsTheMatrixForTheSameBits).
+hypre_ParCSRMatrix* borrow_parcsr(const CsrMatrix& A) {
+  const std::size_t n = A.rows, nnz = A.nonzeros();
+  if (n > std::size_t(INT_MAX) || nnz > std::size_t(INT_MAX)) return nullptr;
+  static_assert(sizeof(HYPRE_Int) == sizeof(std::int32_t) && sizeof(HYPRE_Real) == sizeof(double));
+  std::size_t diagonal_first = 1;
+#pragma omp parallel for schedule(static) reduction(min : diagonal_first) if (n > 20000)
+  for (std::size_t i = 0; i < n; ++i)
+    if (A.row_start[i] == A.row_start[i + 1] || std::size_t(A.column[A.row_start[i]]) != i)
+      diagonal_first = 0;
+  if (!diagonal_first) return nullptr;
+  HYPRE_BigInt starts[2] = {0, HYPRE_BigInt(n)};
+  hypre_ParCSRMatrix* M = hypre_ParCSRMatrixCreate(MPI_COMM_WORLD, HYPRE_BigInt(n), HYPRE_BigInt(n),
+                                                   starts, starts, 0, HYPRE_Int(nnz), 0);
+  hypre_CSRMatrix* diag = hypre_ParCSRMatrixDiag(M);
+  // Set before Initialize, which then allocates only what is missing (the row starts, and the
+  // empty off-diagonal block's).
+  hypre_CSRMatrixJ(diag) = const_cast<HYPRE_Int*>(A.column.data());
+  hypre_CSRMatrixData(diag) = const_cast<HYPRE_Real*>(A.value.data());
+  hypre_CSRMatrixSetDataOwner(diag, 0);
+  hypre_ParCSRMatrixInitialize(M);
+  HYPRE_Int* row = hypre_CSRMatrixI(diag);
+  for (std::size_t i = 0; i <= n; ++i) row[i] = HYPRE_Int(A.row_start[i]);
+  hypre_ParCSRMatrixSetNumNonzeros(M);
+  return M;
+}
+
 hypre_ParVector* make_vector(std::size_t n) {
   HYPRE_BigInt starts[2] = {0, HYPRE_BigInt(n)};
   hypre_ParVector* v = hypre_ParVectorCreate(MPI_COMM_WORLD, HYPRE_BigInt(n), starts);
@@ -156,7 +192,11 @@ class BoomerAmg final : public Preconditioner {
     const auto start = std::chrono::steady_clock::now();
     const double cpu_start = thread_cpu_seconds();
     if (matrix_) hypre_ParCSRMatrixDestroy(matrix_);
-    matrix_ = to_parcsr(A);
+    matrix_ = options_.borrow_matrix ? borrow_parcsr(A) : nullptr;
+    if (!matrix_) {
+      matrix_ = to_parcsr(A);
+      ++counters.matrix_copies;
+    }
     const bool reuse = amg_ && rows_ == A.rows && uses_ < options_.reuse_solves && !stale_;
     if (!reuse) {
       if (amg_) HYPRE_BoomerAMGDestroy(amg_);

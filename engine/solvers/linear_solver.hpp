@@ -66,6 +66,9 @@ struct AmgOptions {
   // hypre's cycle for a matrix too small for two such blocks.
   bool threaded_cycle = true;
   std::size_t cycle_block_rows = 0;
+  // hypre's matrix borrows the solve's columns and values when every row holds its diagonal
+  // first (the PPE assembly's matrices), instead of a copy of them; false: always the copy.
+  bool borrow_matrix = true;
 };
 
 std::unique_ptr<LinearSolver> make_cholmod_solver();

@@ -18,6 +18,7 @@ struct SolverCounters {
   double rows = 0.0, nonzeros = 0.0;  // summed over solves: the mean is / solves
   double solve_seconds = 0.0;         // in solve(), set-up included
   long setups = 0;                    // preconditioner set-ups or factorisations
+  long matrix_copies = 0;             // matrices copied into hypre's form (not borrowed)
   double setup_seconds = 0.0;
   // The calling thread's processor time in set-ups (hypre's and CHOLMOD's set-ups run on it):
   // unlike the wall time, not inflated when other work shares the cores.
