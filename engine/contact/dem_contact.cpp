@@ -24,19 +24,28 @@ PairLaw make_pair_law(const ContactSettings& settings, double radius, const Mate
   return law;
 }
 
-double step_stiffness(const PairLaw& law, double overlap, double reference_overlap) {
-  const double k = std::max(law.normal_stiffness, law.tangential_stiffness);
-  if (law.law == ContactLaw::kLinear) return k;
+namespace {
+
+// Both stiffnesses of one contact, linearised at overlap max(delta, reference) for Hertz, the
+// tangential one whatever the friction.
+StepStiffness linearised_stiffnesses(const PairLaw& law, double overlap, double reference_overlap) {
+  if (law.law == ContactLaw::kLinear) return {law.normal_stiffness, law.tangential_stiffness};
   const double root = std::sqrt(std::max(overlap, reference_overlap));
   // d/d(delta) of k_n delta^{3/2} is 1.5 k_n sqrt(delta); the tangential one is k_s sqrt(delta).
-  return std::max(1.5 * law.normal_stiffness, law.tangential_stiffness) * root;
+  return {1.5 * law.normal_stiffness * root, law.tangential_stiffness * root};
+}
+
+}  // namespace
+
+double step_stiffness(const PairLaw& law, double overlap, double reference_overlap) {
+  const StepStiffness k = linearised_stiffnesses(law, overlap, reference_overlap);
+  return std::max(k.normal, k.tangential);
 }
 
 StepStiffness step_stiffnesses(const PairLaw& law, double overlap, double reference_overlap) {
-  const double tangential = law.friction > 0.0 ? law.tangential_stiffness : 0.0;
-  if (law.law == ContactLaw::kLinear) return {law.normal_stiffness, tangential};
-  const double root = std::sqrt(std::max(overlap, reference_overlap));
-  return {1.5 * law.normal_stiffness * root, tangential * root};
+  StepStiffness k = linearised_stiffnesses(law, overlap, reference_overlap);
+  if (!(law.friction > 0.0)) k.tangential = 0.0;
+  return k;
 }
 
 bool touches_during_step(double overlap, double overlap_rate, double dt) {
