@@ -111,9 +111,10 @@ const std::vector<ParameterInfo>& ParameterSet::engine_table() {
        "relative residual |b - Ax| / |b| at which pcg, pcg_agg and pcg_amg stop",
        d.solver_tolerance},
       {"coupling_tolerance", "-",
-       "relative residual the dynamic bodies' pressure responses are first solved to (pcg, "
-       "pcg_agg, pcg_amg); those whose share of the coupled pressure's residual then exceeds "
-       "solver_tolerance are solved again to what it asks (docs/bodies.md \"Coupling\")",
+       "residual the dynamic bodies' pressure responses are solved to, relative to the largest "
+       "response of their kind (pcg, pcg_agg, pcg_amg); where their share of the coupled "
+       "pressure's residual then exceeds solver_tolerance, the coupled pressure is solved again "
+       "and corrects the bodies' velocities (docs/bodies.md \"Coupling\")",
        d.coupling_tolerance},
       {"solver_max_iterations", "-",
        "pcg, pcg_agg and pcg_amg iteration limit; reaching it stops the run",

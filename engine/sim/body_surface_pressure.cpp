@@ -8,7 +8,7 @@ namespace washout {
 
 void body_surface_pressure(const SphContext& ctx, const NeighborGrid& grid, const Particles& p,
                            const Vec3& gravity, std::span<const std::uint32_t> particles,
-                           std::vector<double>& pressure, bool linear) {
+                           std::vector<double>& pressure) {
   const std::size_t count = particles.size();
   pressure.resize(count);
 #pragma omp parallel for schedule(dynamic, 64)
@@ -31,9 +31,49 @@ void body_surface_pressure(const SphContext& ctx, const NeighborGrid& grid, cons
     double value = 0.0;
     if (fraction >= kDryFluidFraction) {
       value = sum * ctx.volume / fraction;
-      if (fraction < kWetFluidFraction && !linear) value = std::max(value, 0.0);
+      if (fraction < kWetFluidFraction) value = std::max(value, 0.0);
     }
     pressure[k] = value;
+  }
+}
+
+void build_surface_stencil(const SphContext& ctx, const NeighborGrid& grid, const Particles& p,
+                           std::span<const std::uint32_t> particles,
+                           std::span<const std::int32_t> unknown, SurfaceStencil& stencil) {
+  const std::size_t count = particles.size();
+  stencil.offset.assign(count + 1, 0);
+  stencil.fraction.resize(count);
+  stencil.row.clear();
+  stencil.weight.clear();
+  // A body's surface has few points beside the fluid's: searched in order, on one thread.
+  for (std::size_t k = 0; k < count; ++k) {
+    const std::uint32_t w = particles[k];
+    double m[3];
+    for (int a = 0; a < 3; ++a) m[a] = p.position[a][w] + 2.0 * p.wall_distance[w] * p.normal[a][w];
+    const std::size_t first = stencil.row.size();
+    const double fraction = accumulate_fluid_at(ctx, grid, p, m, [&](std::uint32_t f, double W) {
+      if (unknown[f] < 0) return;
+      stencil.row.push_back(unknown[f]);
+      stencil.weight.push_back(W);
+    });
+    if (fraction < kDryFluidFraction) {
+      stencil.row.resize(first);
+      stencil.weight.resize(first);
+    }
+    stencil.fraction[k] = fraction < kDryFluidFraction ? 0.0 : fraction;
+    stencil.offset[k + 1] = static_cast<std::uint32_t>(stencil.row.size());
+  }
+}
+
+void stencil_pressure(const SphContext& ctx, const SurfaceStencil& stencil,
+                      std::span<const double> rows, std::vector<double>& pressure) {
+  const std::size_t count = stencil.fraction.size();
+  pressure.resize(count);
+  for (std::size_t k = 0; k < count; ++k) {
+    double sum = 0.0;
+    for (std::uint32_t e = stencil.offset[k]; e < stencil.offset[k + 1]; ++e)
+      sum += stencil.weight[e] * rows[stencil.row[e]];
+    pressure[k] = stencil.fraction[k] > 0.0 ? sum * ctx.volume / stencil.fraction[k] : 0.0;
   }
 }
 

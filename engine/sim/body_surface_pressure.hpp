@@ -21,10 +21,30 @@
 namespace washout {
 
 // pressure[k] = P(s) for boundary particle particles[k]; the grid must hold the fluid at the
-// positions the pressure was solved for. linear: no clamp at the free surface, so that the
-// result is linear in the fluid pressure (for a pressure response, gravity zero).
+// positions the pressure was solved for.
 void body_surface_pressure(const SphContext& ctx, const NeighborGrid& grid, const Particles& p,
                            const Vec3& gravity, std::span<const std::uint32_t> particles,
-                           std::vector<double>& pressure, bool linear = false);
+                           std::vector<double>& pressure);
+
+// The same interpolation as a linear map of the pressure on the PPE's unknowns, without the
+// hydrostatic carry and the free-surface clamp: what a pressure response field or a change of
+// the pressure gives (the body coupling evaluates it seven times or more a step, so the fluid
+// around each surface point is searched once). Fluid that is no unknown (free surface, films)
+// contributes zero, as its pressure does to such a change.
+struct SurfaceStencil {
+  std::vector<std::uint32_t> offset{0};  // surface point k's entries at [offset[k], offset[k+1])
+  std::vector<std::int32_t> row;         // the PPE unknown of each fluid particle
+  std::vector<double> weight;            // W(m - x_f)
+  std::vector<double> fraction;          // per surface point: its fluid fraction (0: dry)
+};
+
+// `unknown` maps a fluid particle to its PPE row (-1: none).
+void build_surface_stencil(const SphContext& ctx, const NeighborGrid& grid, const Particles& p,
+                           std::span<const std::uint32_t> particles,
+                           std::span<const std::int32_t> unknown, SurfaceStencil& stencil);
+
+// pressure[k] = P(s_k) of the field given on the PPE's rows.
+void stencil_pressure(const SphContext& ctx, const SurfaceStencil& stencil,
+                      std::span<const double> rows, std::vector<double>& pressure);
 
 }  // namespace washout

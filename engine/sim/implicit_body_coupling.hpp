@@ -25,7 +25,7 @@ namespace washout {
 class RigidBodySystem;
 
 struct CouplingReport {
-  int solves = 0;       // extra pressure solves (one per body degree of freedom, plus re-solves)
+  int solves = 0;       // extra pressure solves (one per body degree of freedom, plus corrections)
   long iterations = 0;  // their iterations in all
 };
 
@@ -54,7 +54,8 @@ class ImplicitBodyCoupling {
   std::vector<std::vector<double>> response_, solution_;
   std::vector<double> residual_;               // |B_k - A S_k| of each response
   std::vector<std::vector<double>> previous_;  // S_k per fluid particle, the next warm start
-  std::vector<double> field_;
+  std::vector<double> coupled_, coupled_rhs_;  // the coupled pressure (rows) and its right side
+  std::vector<double> field_rows_;             // the coupled pressure's change, P - P0
 };
 
 }  // namespace washout

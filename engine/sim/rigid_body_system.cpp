@@ -143,15 +143,28 @@ void RigidBodySystem::set_prescribed_velocities(double t, Particles& p) const {
 // n_i dS_i the particle's share of the surface (body_builder.hpp).
 void RigidBodySystem::compute_fluid_loads(const SphContext& ctx, const NeighborGrid& grid,
                                           const Particles& p, const Vec3& gravity) {
-  fluid_loads_ = loads_of_pressure(ctx, grid, p, gravity, false);
+  body_surface_pressure(ctx, grid, p, gravity, surface_particles_, surface_pressure_);
+  loads_of_surface_pressure(p);
+  fluid_loads_ = scratch_loads_;
 }
 
-const std::vector<rigid::BodyLoad>& RigidBodySystem::loads_of_pressure(const SphContext& ctx,
-                                                                       const NeighborGrid& grid,
-                                                                       const Particles& p,
-                                                                       const Vec3& gravity,
-                                                                       bool linear) {
-  body_surface_pressure(ctx, grid, p, gravity, surface_particles_, surface_pressure_, linear);
+void RigidBodySystem::build_linear_load(const SphContext& ctx, const NeighborGrid& grid,
+                                        const Particles& p, std::span<const std::int32_t> unknown) {
+  build_surface_stencil(ctx, grid, p, surface_particles_, unknown, surface_stencil_);
+}
+
+const std::vector<rigid::BodyLoad>& RigidBodySystem::linear_load(const SphContext& ctx,
+                                                                 const Particles& p,
+                                                                 std::span<const double> rows) {
+  stencil_pressure(ctx, surface_stencil_, rows, surface_pressure_);
+  loads_of_surface_pressure(p);
+  return scratch_loads_;
+}
+
+// Hydrodynamic load, METHOD.md Rigid bodies: F_f = sum -P_i n_i dS_i, M_f = sum r_i x (-P_i n_i
+// dS_i), with P_i the pressure on the surface point s_i = x_i + d_i n_i (also the arm r_i) and
+// n_i dS_i the particle's share of the surface (body_builder.hpp).
+void RigidBodySystem::loads_of_surface_pressure(const Particles& p) {
   scratch_loads_.resize(size());
   for (std::size_t b = 0; b < size(); ++b) {
     const std::size_t begin = surface_begin_[b], end = surface_begin_[b + 1];
@@ -174,7 +187,6 @@ const std::vector<rigid::BodyLoad>& RigidBodySystem::loads_of_pressure(const Sph
       load.torque.x() = load.torque.y() = 0.0;
     }
   }
-  return scratch_loads_;
 }
 
 long RigidBodySystem::advance(double t, double dt, const Vec3& gravity, Particles& p) {

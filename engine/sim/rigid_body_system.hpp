@@ -11,6 +11,7 @@
 //      fluid load held, sub-stepped for contact with the fixed walls and between bodies;
 //   4. the body particles follow: x = X + R r0, u = T + w x R r0, n = R n0.
 #include <cstdint>
+#include <span>
 #include <string>
 #include <vector>
 
@@ -20,6 +21,7 @@
 #include "engine/model/model.hpp"
 #include "engine/rigid/rotation_angle.hpp"
 #include "engine/sim/body_builder.hpp"
+#include "engine/sim/body_surface_pressure.hpp"
 
 namespace washout {
 
@@ -53,12 +55,14 @@ class RigidBodySystem {
   // F_f, M_f of every body from the pressure just solved (fluid not yet moved).
   void compute_fluid_loads(const SphContext& ctx, const NeighborGrid& grid, const Particles& p,
                            const Vec3& gravity);
-  // The loads p.pressure would give, without storing them; linear: no free-surface clamp (for
-  // a pressure response field, with gravity zero).
-  const std::vector<rigid::BodyLoad>& loads_of_pressure(const SphContext& ctx,
-                                                        const NeighborGrid& grid,
-                                                        const Particles& p, const Vec3& gravity,
-                                                        bool linear);
+  // The load as a linear map of a pressure field on the PPE's rows (a response field or a change
+  // of the pressure: no hydrostatic carry, no free-surface clamp; body_surface_pressure.hpp):
+  // the fluid around the surface is searched once by build_linear_load, after the pressure
+  // solve, and each linear_load is then a short sum. Not stored as the fluid load.
+  void build_linear_load(const SphContext& ctx, const NeighborGrid& grid, const Particles& p,
+                         std::span<const std::int32_t> unknown);
+  const std::vector<rigid::BodyLoad>& linear_load(const SphContext& ctx, const Particles& p,
+                                                  std::span<const double> rows);
   void set_fluid_load(std::size_t b, const rigid::BodyLoad& load) { fluid_loads_[b] = load; }
   bool dynamic(std::size_t b) const { return models_[b].motion == rigid::MotionKind::kDynamic; }
   // Every body from t to t + dt with contact sub-steps, then its particles. Returns the number
@@ -88,6 +92,8 @@ class RigidBodySystem {
 
  private:
   void place_body(std::size_t b, Particles& p) const;
+  // scratch_loads_ from surface_pressure_ (METHOD.md Rigid bodies).
+  void loads_of_surface_pressure(const Particles& p);
   // x (world) in body b's reference pose, where its shape is defined.
   Vec3 reference_point(std::size_t b, const Vec3& x) const;
 
@@ -104,6 +110,7 @@ class RigidBodySystem {
   std::vector<std::uint32_t> surface_particles_;
   std::vector<std::size_t> surface_begin_;
   std::vector<double> surface_pressure_;
+  SurfaceStencil surface_stencil_;             // build_linear_load's
   rigid::Vec3Array load_point_, load_normal_;  // scratch
   contact::ContactScene contact_;
   contact::ContactWorkspace workspace_;

@@ -34,6 +34,7 @@ class CholmodSolver final : public LinearSolver {
   CholmodSolver(const CholmodSolver&) = delete;
   CholmodSolver& operator=(const CholmodSolver&) = delete;
   std::string name() const override { return "cholmod"; }
+  bool direct() const override { return true; }
 
   SolveReport solve(const CsrMatrix& A, const std::vector<double>& b,
                     std::vector<double>& x) override {

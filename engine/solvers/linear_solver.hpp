@@ -25,6 +25,8 @@ class LinearSolver {
  public:
   virtual ~LinearSolver() = default;
   virtual std::string name() const = 0;
+  // Whether solves are exact (a factorisation) rather than iterated to a tolerance.
+  virtual bool direct() const { return false; }
   // x holds the initial guess on entry (used by iterative solvers) and the solution on exit.
   virtual SolveReport solve(const CsrMatrix& A, const std::vector<double>& b,
                             std::vector<double>& x) = 0;

@@ -17,6 +17,7 @@ class CountedSolver final : public LinearSolver {
  public:
   explicit CountedSolver(std::unique_ptr<LinearSolver> inner) : inner_(std::move(inner)) {}
   std::string name() const override { return inner_->name(); }
+  bool direct() const override { return inner_->direct(); }
   SolveReport solve(const CsrMatrix& A, const std::vector<double>& b,
                     std::vector<double>& x) override {
     if (observer) observer(A, b, x);

@@ -57,6 +57,36 @@ int iterations(LinearSolver& solver, const CsrMatrix& A) {
   return report.iterations;
 }
 
+// residual_norms: the residuals of eight pairs (a group of six and one of two) in one read of
+// the matrix, against each pair's own product, and the same bits on one thread and on two.
+TEST(PressureSolvers, ResidualNormsOfSeveralPairsInOneRead) {
+  const CsrMatrix A = laplacian_3d(24);  // 13,824 rows: more than one block of rows
+  std::vector<std::vector<double>> b(8), x(8);
+  for (std::size_t k = 0; k < b.size(); ++k) {
+    b[k].resize(A.rows);
+    x[k].resize(A.rows);
+    for (std::size_t i = 0; i < A.rows; ++i) {
+      b[k][i] = std::cos(0.003 * double(i * (k + 1)));
+      x[k][i] = std::sin(0.002 * double(i) + double(k));
+    }
+  }
+  std::vector<double> residual, b_norm, residual_one_thread, b_norm_one_thread;
+  residual_norms(A, b, x, residual, b_norm);
+  const int threads = omp_get_max_threads();
+  omp_set_num_threads(1);
+  residual_norms(A, b, x, residual_one_thread, b_norm_one_thread);
+  omp_set_num_threads(threads);
+  for (std::size_t k = 0; k < b.size(); ++k) {
+    double bb = 0.0;
+    for (double v : b[k]) bb += v * v;
+    const double expected = relative_residual(A, b[k], x[k]) * std::sqrt(bb);
+    EXPECT_NEAR(residual[k], expected, 1e-12 * expected) << "pair " << k;
+    EXPECT_NEAR(b_norm[k], std::sqrt(bb), 1e-12 * std::sqrt(bb)) << "pair " << k;
+    EXPECT_EQ(residual[k], residual_one_thread[k]) << "pair " << k;
+    EXPECT_EQ(b_norm[k], b_norm_one_thread[k]) << "pair " << k;
+  }
+}
+
 TEST(PressureSolvers, IterationsStayFlatWhereJacobiGrows) {
   // From 12^3 to 36^3 unknowns (27 times as many): Jacobi's iterations grow about with n. The
   // V-cycle's must not; nor may the aggregates' coarse system's, which takes the long waves
