@@ -9,13 +9,15 @@ void assemble_wall_velocity_response(const SphContext& ctx, const NeighborList& 
                                      const Particles& p, const FluidWork& work,
                                      std::span<const int> first_column,
                                      std::span<const Vec3> centre, double dt,
+                                     std::span<const std::uint32_t> rows,
                                      std::vector<std::vector<double>>& columns) {
-  const std::size_t n = p.fluid_count, rows = work.matrix.rows;
-  for (auto& c : columns) c.assign(rows, 0.0);
+  const std::size_t n = p.fluid_count;
+  for (auto& c : columns) c.assign(work.matrix.rows, 0.0);
   const double scale = ctx.rho0 / dt;
   const bool planar = ctx.dim == 2;
-#pragma omp parallel for schedule(dynamic, 256)
-  for (std::size_t i = 0; i < n; ++i) {
+#pragma omp parallel for schedule(dynamic, 64)
+  for (std::size_t r = 0; r < rows.size(); ++r) {
+    const std::size_t i = rows[r];
     const std::int32_t row = work.unknown[i];
     if (row < 0) continue;
     for (std::uint64_t k = list.offset[i]; k < list.offset[i + 1]; ++k) {
@@ -43,6 +45,28 @@ void assemble_wall_velocity_response(const SphContext& ctx, const NeighborList& 
         for (int a = 0; a < 3; ++a) columns[first + 3 + a][row] += moment[a];
     }
   }
+}
+
+void fluid_beside_bodies(const SphContext& ctx, const NeighborGrid& grid, const Particles& p,
+                         std::span<const int> first_column, std::vector<std::uint8_t>& mark,
+                         std::vector<std::uint32_t>& rows) {
+  const std::size_t n = p.fluid_count;
+  const double r2max = 4.0 * ctx.h * ctx.h;
+  mark.assign(n, 0);
+  // A body has few particles beside the fluid's: searched on one thread.
+  for (std::size_t w = n; w < p.size(); ++w) {
+    const std::int32_t b = p.body[w];
+    if (b < 0 || first_column[b] < 0) continue;
+    const double x[3] = {p.position[0][w], p.position[1][w], p.position[2][w]};
+    grid.for_each_candidate_below(x, static_cast<std::uint32_t>(n), [&](std::uint32_t f) {
+      double d[3] = {x[0] - p.position[0][f], x[1] - p.position[1][f], x[2] - p.position[2][f]};
+      if (ctx.periodic.any()) ctx.periodic.minimum_image(d);
+      if (d[0] * d[0] + d[1] * d[1] + d[2] * d[2] < r2max) mark[f] = 1;
+    });
+  }
+  rows.clear();
+  for (std::size_t i = 0; i < n; ++i)
+    if (mark[i]) rows.push_back(static_cast<std::uint32_t>(i));
 }
 
 }  // namespace washout

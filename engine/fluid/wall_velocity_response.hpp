@@ -22,10 +22,19 @@ namespace washout {
 // first_column[b]: the first of body b's dofs_per_body columns (T_x, T_y[, T_z], then w_z in 2D
 // or w_x, w_y, w_z in 3D), or -1 for a body that is not solved for. centre[b]: its X.
 // columns must hold (number of columns) vectors; each is resized to the PPE's rows and filled.
+// `rows` lists the fluid particles (ascending) that may have a body particle in their support:
+// only their neighbours are walked (the rest of the fluid, most of it, has zero rows).
 void assemble_wall_velocity_response(const SphContext& ctx, const NeighborList& list,
                                      const Particles& p, const FluidWork& work,
                                      std::span<const int> first_column,
                                      std::span<const Vec3> centre, double dt,
+                                     std::span<const std::uint32_t> rows,
                                      std::vector<std::vector<double>>& columns);
+
+// The fluid particles within the kernel's support (2h) of some particle of a body b with
+// first_column[b] >= 0, ascending: the rows assemble_wall_velocity_response needs.
+void fluid_beside_bodies(const SphContext& ctx, const NeighborGrid& grid, const Particles& p,
+                         std::span<const int> first_column, std::vector<std::uint8_t>& mark,
+                         std::vector<std::uint32_t>& rows);
 
 }  // namespace washout

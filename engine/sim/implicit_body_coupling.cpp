@@ -103,7 +103,8 @@ CouplingReport ImplicitBodyCoupling::couple(const SphContext& ctx, const Neighbo
 
   // S_k = A^-1 B_k, warm-started from the last step's S_k (by particle).
   response_.resize(columns);
-  assemble_wall_velocity_response(ctx, list, p, work, first_column, centre, dt, response_);
+  fluid_beside_bodies(ctx, grid, p, first_column, beside_mark_, beside_);
+  assemble_wall_velocity_response(ctx, list, p, work, first_column, centre, dt, beside_, response_);
   solution_.resize(columns);
   previous_.resize(columns);
   residual_.assign(columns, 0.0);

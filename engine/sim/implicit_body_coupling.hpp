@@ -56,6 +56,8 @@ class ImplicitBodyCoupling {
   std::vector<std::vector<double>> previous_;  // S_k per fluid particle, the next warm start
   std::vector<double> coupled_, coupled_rhs_;  // the coupled pressure (rows) and its right side
   std::vector<double> field_rows_;             // the coupled pressure's change, P - P0
+  std::vector<std::uint8_t> beside_mark_;      // fluid_beside_bodies' scratch
+  std::vector<std::uint32_t> beside_;          // the fluid within 2h of a dynamic body
 };
 
 }  // namespace washout
