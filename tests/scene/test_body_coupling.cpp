@@ -6,7 +6,7 @@
 // the responses first solved to 1e-2 (the default) and to 1e-8 (every response as tightly as the
 // pressure): the paths must agree to 1e-7 m (measured: 8e-10 m over 0.2 s, the box moving
 // 11 mm) while the loose run takes fewer solver iterations (measured 28.8 against 140.4 a step;
-// 61.6 against 227.8 when the responses were solved again instead of the pressure).
+// 30.9 against 142.7 when the responses were solved again instead of the pressure).
 #include <gtest/gtest.h>
 
 #include <algorithm>
