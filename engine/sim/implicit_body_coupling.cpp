@@ -128,17 +128,6 @@ CouplingReport ImplicitBodyCoupling::couple(const SphContext& ctx, const Neighbo
   const bool wet = *std::max_element(response_norm.begin(), response_norm.end()) > 0.0;
   if (wet && !solver.direct())
     residual_norms(work.matrix, response_, solution_, warm_residual, response_norm);
-  // Solves S_k to a relative residual `tolerance`; residual_[k] = |B_k - A S_k|.
-  const auto solve_response = [&](int k, double tolerance) {
-    auto& x = solution_[k];
-    const SolveReport solve = solver.solve_again_to(work.matrix, response_[k], x, tolerance);
-    if (!solve.converged)
-      throw UnstableError("the body coupling's pressure response did not converge in " +
-                          std::to_string(solve.iterations) + " iterations");
-    ++report.solves;
-    report.iterations += solve.iterations;
-    residual_[k] = solve.relative_residual * response_norm[k];
-  };
   // The responses are solved as a set, each to `response` times the largest of its kind
   // (translations, rotations): one the body's wet faces hardly excite (the sideways push of a
   // girder wetted on its front and floor, 1e-15 of the others) needs no iterations of its own.
@@ -154,14 +143,33 @@ CouplingReport ImplicitBodyCoupling::couple(const SphContext& ctx, const Neighbo
           largest[k] = std::max(largest[k], response_norm[j]);
     }
   }
+  // The rest side by side (one read of the matrix for all their products); residual_[k] =
+  // |B_k - A S_k|.
+  std::vector<const std::vector<double>*> right_side;
+  std::vector<std::vector<double>*> unsolved;
+  std::vector<double> tolerance;
+  std::vector<int> which;
   for (int k = 0; k < columns; ++k) {
     if (!solver.direct() && response_norm[k] > 0.0 &&
         warm_residual[k] <= tolerances.response * largest[k]) {
       residual_[k] = warm_residual[k];
       continue;
     }
-    solve_response(k, response_norm[k] > 0.0 ? tolerances.response * largest[k] / response_norm[k]
-                                             : tolerances.response);
+    which.push_back(k);
+    right_side.push_back(&response_[k]);
+    unsolved.push_back(&solution_[k]);
+    tolerance.push_back(response_norm[k] > 0.0 ? tolerances.response * largest[k] / response_norm[k]
+                                               : tolerances.response);
+  }
+  const std::vector<SolveReport> solves =
+      solver.solve_many_again_to(work.matrix, right_side, unsolved, tolerance);
+  for (std::size_t s = 0; s < solves.size(); ++s) {
+    if (!solves[s].converged)
+      throw UnstableError("the body coupling's pressure response did not converge in " +
+                          std::to_string(solves[s].iterations) + " iterations");
+    ++report.solves;
+    report.iterations += solves[s].iterations;
+    residual_[which[s]] = solves[s].relative_residual * response_norm[which[s]];
   }
 
   std::vector<rigid::BodyLoad> base(bodies.size());

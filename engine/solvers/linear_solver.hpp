@@ -42,6 +42,17 @@ class LinearSolver {
                                      std::vector<double>& x, double /*tolerance*/) {
     return solve_again(A, b, x);
   }
+  // solve_again_to for several right-hand sides, each to its own tolerance (the body coupling's
+  // responses). An iterative solver runs their iterations side by side, the products of all in
+  // one read of the matrix; the others solve one after the other.
+  virtual std::vector<SolveReport> solve_many_again_to(
+      const CsrMatrix& A, const std::vector<const std::vector<double>*>& b,
+      const std::vector<std::vector<double>*>& x, const std::vector<double>& tolerance) {
+    std::vector<SolveReport> reports;
+    for (std::size_t k = 0; k < b.size(); ++k)
+      reports.push_back(solve_again_to(A, *b[k], *x[k], tolerance[k]));
+    return reports;
+  }
 };
 
 // BoomerAMG's settings (hypre's codes; docs/performance.md says how they were chosen).

@@ -113,6 +113,83 @@ class PcgSolver final : public LinearSolver {
                              std::vector<double>& x, double tolerance) override {
     return iterate(A, b, x, true, tolerance);
   }
+  // The same CG iterations for each system as solve_again_to, side by side: each step's
+  // products of all the systems still iterating in one read of the matrix (full rows).
+  std::vector<SolveReport> solve_many_again_to(const CsrMatrix& A,
+                                               const std::vector<const std::vector<double>*>& b,
+                                               const std::vector<std::vector<double>*>& x,
+                                               const std::vector<double>& tolerance) override {
+    const std::size_t count = b.size(), n = A.rows;
+    std::vector<SolveReport> reports(count);
+    if (count == 0) return reports;
+    preconditioner_->prepare(A, true);
+    take_matrix(A, true);
+    many_.resize(count);
+    std::vector<double> b_norm(count), rz(count), r_norm(count);
+    std::vector<std::size_t> active;
+    std::vector<const std::vector<double>*> from;
+    std::vector<std::vector<double>*> to;
+    for (std::size_t k = 0; k < count; ++k) {
+      x[k]->resize(n, 0.0);
+      b_norm[k] = std::sqrt(dot(*b[k], *b[k]));
+      if (n == 0 || b_norm[k] == 0.0) {
+        std::fill(x[k]->begin(), x[k]->end(), 0.0);
+        reports[k].converged = true;
+        continue;
+      }
+      active.push_back(k);
+      from.push_back(x[k]);
+      to.push_back(&many_[k].q);
+    }
+    multiply_many_counted(A, from, to);
+    for (std::size_t k : active) {
+      System& s = many_[k];
+      s.r.resize(n);
+      const std::vector<double>& bk = *b[k];
+#pragma omp parallel for schedule(static) if (n > kParallelRows)
+      for (std::size_t i = 0; i < n; ++i) s.r[i] = bk[i] - s.q[i];
+      precondition(s.r, s.z);
+      s.p = s.z;
+      const auto [rz0, rr0] = dots(s.r, s.z, s.r);
+      rz[k] = rz0;
+      r_norm[k] = std::sqrt(rr0);
+    }
+    const auto unconverged = [&](std::size_t k) {
+      return r_norm[k] > tolerance[k] * b_norm[k] && reports[k].iterations < max_iterations_;
+    };
+    std::erase_if(active, [&](std::size_t k) { return !unconverged(k); });
+    while (!active.empty()) {
+      from.clear();
+      to.clear();
+      for (std::size_t k : active) from.push_back(&many_[k].p), to.push_back(&many_[k].q);
+      multiply_many_counted(A, from, to);
+      for (std::size_t k : active) {
+        System& s = many_[k];
+        std::vector<double>& xk = *x[k];
+        const double step = rz[k] / dot(s.p, s.q);
+#pragma omp parallel for schedule(static) if (n > kParallelRows)
+        for (std::size_t i = 0; i < n; ++i) {
+          xk[i] += step * s.p[i];
+          s.r[i] -= step * s.q[i];
+        }
+        precondition(s.r, s.z);
+        const auto [rz_new, rr_new] = dots(s.r, s.z, s.r);
+        const double beta = rz_new / rz[k];
+        rz[k] = rz_new;
+#pragma omp parallel for schedule(static) if (n > kParallelRows)
+        for (std::size_t i = 0; i < n; ++i) s.p[i] = s.z[i] + beta * s.p[i];
+        r_norm[k] = std::sqrt(rr_new);
+        ++reports[k].iterations;
+      }
+      std::erase_if(active, [&](std::size_t k) { return !unconverged(k); });
+    }
+    for (std::size_t k = 0; k < count; ++k) {
+      if (b_norm[k] == 0.0) continue;
+      reports[k].relative_residual = r_norm[k] / b_norm[k];
+      reports[k].converged = r_norm[k] <= tolerance[k] * b_norm[k];
+    }
+    return reports;
+  }
 
  private:
   // With upper_triangle_ (Jacobi CG), the products use the upper triangle alone where it pays
@@ -136,6 +213,15 @@ class PcgSolver final : public LinearSolver {
     c.product_seconds += seconds_since(start);
     c.product_bytes += symmetric_.ready() ? symmetric_.product_bytes() : csr_product_bytes(A);
     ++c.products;
+  }
+  void multiply_many_counted(const CsrMatrix& A, const std::vector<const std::vector<double>*>& v,
+                             const std::vector<std::vector<double>*>& out) {
+    const auto start = std::chrono::steady_clock::now();
+    multiply_many(A, v, out);
+    auto& c = solver_counters();
+    c.product_seconds += seconds_since(start);
+    c.product_bytes += csr_product_bytes(A) + 16.0 * double(A.rows) * double(v.size() - 1);
+    c.products += static_cast<long>(v.size());
   }
   void precondition(const std::vector<double>& r, std::vector<double>& z) {
     const auto start = std::chrono::steady_clock::now();
@@ -218,6 +304,10 @@ class PcgSolver final : public LinearSolver {
   double tolerance_;
   int max_iterations_;
   std::vector<double> r_, z_, p_, q_;
+  struct System {  // one right-hand side of solve_many_again_to
+    std::vector<double> r, z, p, q;
+  };
+  std::vector<System> many_;
   bool upper_triangle_ = true;
   SymmetricProduct symmetric_;
   bool product_taken_ = false;

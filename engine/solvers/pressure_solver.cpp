@@ -31,6 +31,23 @@ class CountedSolver final : public LinearSolver {
                              std::vector<double>& x, double tolerance) override {
     return count(A, [&] { return inner_->solve_again_to(A, b, x, tolerance); });
   }
+  std::vector<SolveReport> solve_many_again_to(const CsrMatrix& A,
+                                               const std::vector<const std::vector<double>*>& b,
+                                               const std::vector<std::vector<double>*>& x,
+                                               const std::vector<double>& tolerance) override {
+    const auto start = std::chrono::steady_clock::now();
+    const auto reports = inner_->solve_many_again_to(A, b, x, tolerance);
+    counters.solve_seconds +=
+        std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+    counters.solver = inner_->name();
+    for (const SolveReport& report : reports) {
+      ++counters.solves;
+      counters.iterations += report.iterations;
+      counters.rows += double(A.rows);
+      counters.nonzeros += double(A.nonzeros());
+    }
+    return reports;
+  }
 
  private:
   template <class Solve>

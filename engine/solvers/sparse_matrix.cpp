@@ -22,38 +22,74 @@ void CsrMatrix::multiply(const std::vector<double>& x, std::vector<double>& y) c
   }
 }
 
+namespace {
+
+constexpr std::size_t kGroup = 6;  // vectors a row's entries are read for at once
+
+// Vectors x[first, first + group) side by side, so that a column's values share a cache line.
+// The buffer is the calling thread's, shared by the threads of the loops that read it.
+const std::vector<double>& packed_group(const std::vector<const std::vector<double>*>& x,
+                                        std::size_t first, std::size_t group, std::size_t n) {
+  thread_local std::vector<double> buffer;
+  std::vector<double>& packed = buffer;
+  packed.assign(n * kGroup, 0.0);
+#pragma omp parallel for schedule(static) if (n > 4096)
+  for (std::size_t j = 0; j < n; ++j)
+    for (std::size_t k = 0; k < group; ++k) packed[j * kGroup + k] = (*x[first + k])[j];
+  return packed;
+}
+
+// ax[k] = (A x_k)_i for the packed group.
+inline void row_products(const CsrMatrix& A, std::size_t i, const std::vector<double>& packed,
+                         double ax[kGroup]) {
+  for (std::size_t k = 0; k < kGroup; ++k) ax[k] = 0.0;
+  for (std::int64_t e = A.row_start[i]; e < A.row_start[i + 1]; ++e) {
+    const double v = A.value[e];
+    const double* xj = &packed[std::size_t(A.column[e]) * kGroup];
+    for (std::size_t k = 0; k < kGroup; ++k) ax[k] += v * xj[k];
+  }
+}
+
+}  // namespace
+
+void multiply_many(const CsrMatrix& A, const std::vector<const std::vector<double>*>& x,
+                   const std::vector<std::vector<double>*>& y) {
+  const std::size_t count = x.size(), n = A.rows;
+  for (std::size_t first = 0; first < count; first += kGroup) {
+    const std::size_t group = std::min(kGroup, count - first);
+    const std::vector<double>& packed = packed_group(x, first, group, n);
+    for (std::size_t k = 0; k < group; ++k) y[first + k]->resize(n);
+#pragma omp parallel for schedule(static) if (A.nonzeros() > kParallelNonzeros)
+    for (std::size_t i = 0; i < n; ++i) {
+      double ax[kGroup];
+      row_products(A, i, packed, ax);
+      for (std::size_t k = 0; k < group; ++k) (*y[first + k])[i] = ax[k];
+    }
+  }
+}
+
 void residual_norms(const CsrMatrix& A, const std::vector<std::vector<double>>& b,
                     const std::vector<std::vector<double>>& x, std::vector<double>& residual,
                     std::vector<double>& b_norm) {
   constexpr std::size_t kBlock = 2048;  // rows a partial sum covers
-  constexpr std::size_t kGroup = 6;     // right-hand sides a row's entries are read for at once
   const std::size_t count = b.size(), n = A.rows;
   const std::size_t blocks = (n + kBlock - 1) / kBlock;
   residual.assign(count, 0.0);
   b_norm.assign(count, 0.0);
+  std::vector<const std::vector<double>*> xs;
+  for (const auto& v : x) xs.push_back(&v);
   // Per block, then per pair: the squares of the residual and of b.
   std::vector<double> partial(blocks * count * 2, 0.0);
-  // A group's x side by side, so that a column's six values share a cache line.
-  // (The calling thread's buffer, shared by the threads of the loops below.)
-  thread_local std::vector<double> packed_buffer;
-  std::vector<double>& packed = packed_buffer;
   for (std::size_t first = 0; first < count; first += kGroup) {
     const std::size_t group = std::min(kGroup, count - first);
-    packed.assign(n * kGroup, 0.0);
-#pragma omp parallel for schedule(static) if (n > kBlock)
-    for (std::size_t j = 0; j < n; ++j)
-      for (std::size_t k = 0; k < group; ++k) packed[j * kGroup + k] = x[first + k][j];
+    const std::vector<double>& packed = packed_group(xs, first, group, n);
 #pragma omp parallel for schedule(static) if (A.nonzeros() > kParallelNonzeros)
     for (std::size_t block = 0; block < blocks; ++block) {
       double* sums = &partial[block * count * 2];
       const std::size_t end = std::min(n, (block + 1) * kBlock);
       for (std::size_t i = block * kBlock; i < end; ++i) {
-        double ax[kGroup] = {0.0, 0.0, 0.0, 0.0, 0.0, 0.0};
-        for (std::int64_t e = A.row_start[i]; e < A.row_start[i + 1]; ++e) {
-          const double v = A.value[e];
-          const double* xj = &packed[std::size_t(A.column[e]) * kGroup];
-          for (std::size_t k = 0; k < kGroup; ++k) ax[k] += v * xj[k];
-        }
+        double ax[kGroup];
+        row_products(A, i, packed, ax);
         for (std::size_t k = 0; k < group; ++k) {
           const double bi = b[first + k][i], r = bi - ax[k];
           sums[2 * (first + k)] += r * r;

@@ -16,6 +16,11 @@ struct CsrMatrix {
   void multiply(const std::vector<double>& x, std::vector<double>& y) const;  // y = A x
 };
 
+// y[k] = A x[k] for several vectors in one read of the matrix (full rows, the vectors side by
+// side: the body coupling's responses iterated together, pcg_solver.cpp).
+void multiply_many(const CsrMatrix& A, const std::vector<const std::vector<double>*>& x,
+                   const std::vector<std::vector<double>*>& y);
+
 // residual[k] = |b[k] - A x[k]| and b_norm[k] = |b[k]| for several pairs in one read of the
 // matrix (the body coupling's warm-started responses: six per body, checked before any is
 // solved), summed in fixed blocks of rows so that the result does not depend on the threads.

@@ -87,6 +87,67 @@ TEST(PressureSolvers, ResidualNormsOfSeveralPairsInOneRead) {
   }
 }
 
+// solve_many_again_to: seven right-hand sides of one matrix iterated side by side (the body
+// coupling's responses), each to its own tolerance, against the same solves one at a time: the
+// same iterations (the same CG, only the products' sums in another order) and each residual
+// within its tolerance. And multiply_many against one product at a time.
+TEST(PressureSolvers, SeveralRightHandSidesSideBySide) {
+  const CsrMatrix A = laplacian_3d(20);
+  for (const std::string name : {"pcg", "pcg_agg", "pcg_amg"}) {
+    auto solver = make_solver(name, 1e-8, 1000);
+    std::vector<double> x0(A.rows, 0.0);
+    solver->solve(A, smooth_rhs(A.rows), x0);  // the matrix's first solve, as in a step
+    std::vector<std::vector<double>> b(7), together(7), alone(7);
+    std::vector<double> tolerance;
+    for (std::size_t k = 0; k < b.size(); ++k) {
+      b[k].resize(A.rows);
+      for (std::size_t i = 0; i < A.rows; ++i) b[k][i] = std::cos(0.01 * double(i * (k + 2)));
+      together[k].assign(A.rows, 0.0);
+      alone[k].assign(A.rows, 0.0);
+      tolerance.push_back(k == 3 ? 1e30 : std::pow(10.0, -2.0 - double(k)));
+    }
+    b[5].assign(A.rows, 0.0);  // a zero right-hand side: x = 0, no iterations
+    together[5].assign(A.rows, 1.0);
+    std::vector<const std::vector<double>*> right;
+    std::vector<std::vector<double>*> unknown;
+    for (std::size_t k = 0; k < b.size(); ++k)
+      right.push_back(&b[k]), unknown.push_back(&together[k]);
+    const auto reports = solver->solve_many_again_to(A, right, unknown, tolerance);
+    ASSERT_EQ(reports.size(), b.size());
+    for (std::size_t k = 0; k < b.size(); ++k) {
+      const SolveReport one = solver->solve_again_to(A, b[k], alone[k], tolerance[k]);
+      std::printf("%s, tolerance %.0e: %d iterations side by side, %d alone\n", name.c_str(),
+                  tolerance[k], reports[k].iterations, one.iterations);
+      EXPECT_TRUE(reports[k].converged);
+      EXPECT_NEAR(reports[k].iterations, one.iterations, 1) << name << " system " << k;
+      if (k == 5) {
+        EXPECT_EQ(reports[k].iterations, 0);
+        for (double v : together[k]) ASSERT_EQ(v, 0.0);
+        continue;
+      }
+      if (k == 3) EXPECT_EQ(reports[k].iterations, 0);
+      EXPECT_LE(relative_residual(A, b[k], together[k]), tolerance[k] * 1.000001)
+          << name << " system " << k;
+    }
+  }
+  std::vector<const std::vector<double>*> x;
+  std::vector<std::vector<double>> y(8), v(8);
+  std::vector<std::vector<double>*> out;
+  for (std::size_t k = 0; k < v.size(); ++k) {
+    v[k] = smooth_rhs(A.rows);
+    for (std::size_t i = 0; i < A.rows; ++i) v[k][i] *= double(k + 1) + 0.001 * double(i % 7);
+    x.push_back(&v[k]);
+    out.push_back(&y[k]);
+  }
+  multiply_many(A, x, out);
+  for (std::size_t k = 0; k < v.size(); ++k) {
+    std::vector<double> one;
+    A.multiply(v[k], one);
+    for (std::size_t i = 0; i < A.rows; ++i)
+      ASSERT_NEAR(y[k][i], one[i], 1e-12 * (1.0 + std::abs(one[i]))) << "vector " << k;
+  }
+}
+
 TEST(PressureSolvers, IterationsStayFlatWhereJacobiGrows) {
   // From 12^3 to 36^3 unknowns (27 times as many): Jacobi's iterations grow about with n. The
   // V-cycle's must not; nor may the aggregates' coarse system's, which takes the long waves
