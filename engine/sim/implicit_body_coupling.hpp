@@ -30,7 +30,8 @@ struct CouplingReport {
 };
 
 // Relative residuals: the pressure solve's (solver_tolerance), and the one the response fields
-// are first solved to (coupling_tolerance; implicit_body_coupling.cpp says why it may be looser).
+// are solved to, relative to the largest response of their kind (coupling_tolerance;
+// implicit_body_coupling.cpp says why it may be looser).
 struct CouplingTolerances {
   double pressure = 1e-6;
   double response = 1e-6;
