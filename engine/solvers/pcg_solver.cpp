@@ -216,6 +216,7 @@ class PcgSolver final : public LinearSolver {
   }
   void multiply_many_counted(const CsrMatrix& A, const std::vector<const std::vector<double>*>& v,
                              const std::vector<std::vector<double>*>& out) {
+    if (v.empty()) return;
     const auto start = std::chrono::steady_clock::now();
     multiply_many(A, v, out);
     auto& c = solver_counters();
