@@ -129,6 +129,13 @@ TEST(PressureSolvers, SeveralRightHandSidesSideBySide) {
       EXPECT_LE(relative_residual(A, b[k], together[k]), tolerance[k] * 1.000001)
           << name << " system " << k;
     }
+    // Nothing to iterate: no product made or counted.
+    const double bytes = solver_counters().product_bytes;
+    std::vector<double> zero(A.rows, 0.0), guess(A.rows, 1.0);
+    const auto none = solver->solve_many_again_to(A, {&zero}, {&guess}, {1e-6});
+    EXPECT_EQ(none[0].iterations, 0);
+    EXPECT_EQ(solver_counters().product_bytes, bytes);
+    EXPECT_EQ(guess[0], 0.0);
   }
   std::vector<const std::vector<double>*> x;
   std::vector<std::vector<double>> y(8), v(8);
