@@ -174,10 +174,13 @@ CouplingReport ImplicitBodyCoupling::couple(const SphContext& ctx, const Neighbo
 
   std::vector<rigid::BodyLoad> base(bodies.size());
   for (std::size_t b = 0; b < bodies.size(); ++b) base[b] = bodies.fluid_load(b);
-  bodies.build_linear_load(ctx, grid, p, work.unknown);
-  Eigen::MatrixXd G(columns, columns);
-  for (int k = 0; k < columns; ++k)
-    linear_load(ctx, p, bodies, first_column, solution_[k], G.col(k));
+  // A body with no fluid beside it (the girder before the wave) has zero responses and loads.
+  Eigen::MatrixXd G = Eigen::MatrixXd::Zero(columns, columns);
+  if (wet) {
+    bodies.build_linear_load(ctx, grid, p, work.unknown);
+    for (int k = 0; k < columns; ++k)
+      linear_load(ctx, p, bodies, first_column, solution_[k], G.col(k));
+  }
   const Eigen::PartialPivLU<Eigen::MatrixXd> K(coupled_matrix(G, first_column, bodies, dim, dt));
   const Eigen::VectorXd load = coupled_load(base, first_column, bodies, dim, columns, gravity);
   Eigen::VectorXd dxi = K.solve(load);
