@@ -126,8 +126,8 @@ CouplingReport ImplicitBodyCoupling::couple(const SphContext& ctx, const Neighbo
   std::vector<double> warm_residual(columns, 0.0), response_norm(columns, 0.0);
   for (int k = 0; k < columns; ++k) response_norm[k] = norm(response_[k]);
   const bool wet = *std::max_element(response_norm.begin(), response_norm.end()) > 0.0;
-  if (wet && !solver.direct())
-    residual_norms(work.matrix, response_, solution_, warm_residual, response_norm);
+  const bool warm_checked = wet && !solver.direct();
+  if (warm_checked) residual_norms(work.matrix, response_, solution_, warm_residual, response_norm);
   // The responses are solved as a set, each to `response` times the largest of its kind
   // (translations, rotations): one the body's wet faces hardly excite (the sideways push of a
   // girder wetted on its front and floor, 1e-15 of the others) needs no iterations of its own.
@@ -150,7 +150,7 @@ CouplingReport ImplicitBodyCoupling::couple(const SphContext& ctx, const Neighbo
   std::vector<double> tolerance;
   std::vector<int> which;
   for (int k = 0; k < columns; ++k) {
-    if (!solver.direct() && response_norm[k] > 0.0 &&
+    if (warm_checked && response_norm[k] > 0.0 &&
         warm_residual[k] <= tolerances.response * largest[k]) {
       residual_[k] = warm_residual[k];
       continue;

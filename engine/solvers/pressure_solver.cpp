@@ -39,13 +39,7 @@ class CountedSolver final : public LinearSolver {
     const auto reports = inner_->solve_many_again_to(A, b, x, tolerance);
     counters.solve_seconds +=
         std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-    counters.solver = inner_->name();
-    for (const SolveReport& report : reports) {
-      ++counters.solves;
-      counters.iterations += report.iterations;
-      counters.rows += double(A.rows);
-      counters.nonzeros += double(A.nonzeros());
-    }
+    for (const SolveReport& report : reports) record(A, report);
     return reports;
   }
 
@@ -56,12 +50,16 @@ class CountedSolver final : public LinearSolver {
     const SolveReport report = solve();
     counters.solve_seconds +=
         std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+    record(A, report);
+    return report;
+  }
+  // One solve in the counters (its time is counted by the caller).
+  void record(const CsrMatrix& A, const SolveReport& report) {
     ++counters.solves;
     counters.solver = inner_->name();
     counters.iterations += report.iterations;
     counters.rows += double(A.rows);
     counters.nonzeros += double(A.nonzeros());
-    return report;
   }
   std::unique_ptr<LinearSolver> inner_;
 };
