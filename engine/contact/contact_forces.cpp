@@ -383,6 +383,9 @@ void contact_loads(std::span<const BodyModel> models, std::span<const BodyState>
     if (touches_during_step(c.overlap, -pair_relative(c).dot(c.normal), h))
       ++ws.pair_touching[c.body_a * bodies + c.body_b];
 
+  // The candidates come body by body and wall by wall: one dashpot coefficient per run of them.
+  int dashpot_slot = -1;
+  double dashpot = 0.0;
   for (const WallCandidate& c : ws.wall_candidates) {
     const double rate = wall_rate(c);
     if (!touches_during_step(c.overlap, rate, h)) continue;
@@ -396,10 +399,14 @@ void contact_loads(std::span<const BodyModel> models, std::span<const BodyState>
     k.normal = c.normal;
     k.tangential_velocity = ui + rate * c.normal;
     k.damping_mass = shared ? model.mass / ws.wall_touching[slot] : model.mass;
+    if (slot != dashpot_slot) {
+      dashpot_slot = slot;
+      dashpot = dashpot_coefficient(ws.wall_law[slot], k.damping_mass);
+    }
     rigid::Vec3Array& springs = ws.wall_spring[c.body];
     const std::size_t s = static_cast<std::size_t>(c.wall) * x.size() + c.particle;
     Vec3 spring = springs[s];
-    const Vec3 force = spring_dashpot_force(ws.wall_law[slot], k, h, spring);
+    const Vec3 force = spring_dashpot_force(ws.wall_law[slot], k, dashpot, h, spring);
     springs.set(s, spring);
     ws.wall_spring_used[slot] = 1;
     // Applied at the contact point, the middle of the overlap (METHOD.md's r_i x F_c,i with

@@ -48,14 +48,15 @@ StepStiffness step_stiffnesses(const PairLaw& law, double overlap, double refere
   return k;
 }
 
-bool touches_during_step(double overlap, double overlap_rate, double dt) {
-  return overlap > 0.0 || overlap + dt * overlap_rate > 0.0;
-}
-
 // DEM spring-dashpot contact, METHOD.md Contact:
 //   F_n = -(k_n delta_n + c_n d(delta_n)/dt) n       (n there points into the partner)
 //   F_s = -min(mu |F_n|, |k_s delta_s + c_s d(delta_s)/dt|) s_hat,   c_s = c_n
 Vec3 spring_dashpot_force(const PairLaw& law, const ContactKinematics& c, double dt, Vec3& spring) {
+  return spring_dashpot_force(law, c, dashpot_coefficient(law, c.damping_mass), dt, spring);
+}
+
+Vec3 spring_dashpot_force(const PairLaw& law, const ContactKinematics& c, double dashpot, double dt,
+                          Vec3& spring) {
   const bool hertz = law.law == ContactLaw::kHertz;
   const double power = hertz ? 1.5 : 1.0;  // spring force ~ delta^power
 
@@ -78,22 +79,29 @@ Vec3 spring_dashpot_force(const PairLaw& law, const ContactKinematics& c, double
     return Vec3::Zero();
   }
 
-  const double damping = law.damping_factor * std::sqrt(c.damping_mass * law.normal_stiffness) *
-                         (hertz ? std::sqrt(std::sqrt(delta)) : 1.0);
+  const double damping = dashpot * (hertz ? std::sqrt(std::sqrt(delta)) : 1.0);
   double normal_force = law.normal_stiffness * spring_mean + damping * c.overlap_rate;
   if (!law.allow_tension) normal_force = std::max(normal_force, 0.0);
 
-  // Tangential spring: keep its length, turn it onto the current tangent plane.
-  const double length = spring.norm();
-  spring -= spring.dot(c.normal) * c.normal;
-  const double projected = spring.norm();
-  if (projected > 0.0) spring *= length / projected;
+  // Tangential spring: keep its length, turn it onto the current tangent plane. (Already in
+  // it, as on a flat face, where the turn would scale it by exactly 1: the roots are skipped.)
+  const double along = spring.dot(c.normal);
+  if (along != 0.0) {
+    const double length = spring.norm();
+    spring -= along * c.normal;
+    const double projected = spring.norm();
+    if (projected > 0.0) spring *= length / projected;
+  }
 
   const double k_s = law.tangential_stiffness * (hertz ? std::sqrt(delta) : 1.0);
   Vec3 tangential = -k_s * spring - damping * c.tangential_velocity;
   const double limit = law.friction * std::max(normal_force, 0.0);
-  const double magnitude = tangential.norm();
-  if (magnitude > limit) {  // slip: the Coulomb slider caps the force and the spring
+  // |F_s| > limit decided on the squares where they leave no doubt (the margin covers the
+  // rounding of limit^2), with the root only near the limit and for the cap.
+  const double magnitude2 = tangential.squaredNorm();
+  if (magnitude2 > limit * limit * (1.0 - 1e-12) && std::sqrt(magnitude2) > limit) {
+    // slip: the Coulomb slider caps the force and the spring
+    const double magnitude = std::sqrt(magnitude2);
     tangential = magnitude > 0.0 ? Vec3(tangential * (limit / magnitude)) : Vec3::Zero();
     spring = k_s > 0.0 ? Vec3(-tangential / k_s) : Vec3::Zero();
   }

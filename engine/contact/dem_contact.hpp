@@ -2,6 +2,7 @@
 // The DEM spring-dashpot law for one contact (METHOD.md Contact): a normal spring and dashpot,
 // and a tangential spring and dashpot in series with a Coulomb slider. The sweeps that find
 // contacts and sum forces on bodies are in contact_forces.hpp.
+#include <cmath>
 #include <cstdint>
 
 #include "engine/contact/contact_material.hpp"
@@ -77,7 +78,16 @@ struct ContactKinematics {
 
 // True when the pair overlaps during some part of the step [t, t + dt], taking the overlap as
 // linear in time over the step.
-bool touches_during_step(double overlap, double overlap_rate, double dt);
+inline bool touches_during_step(double overlap, double overlap_rate, double dt) {
+  return overlap > 0.0 || overlap + dt * overlap_rate > 0.0;
+}
+
+// The dashpot's coefficient before the Hertz factor, c = 2 zeta sqrt(m k_n) (METHOD.md): the
+// same for every contact of one body with one partner in a sub-step, so the sub-steps compute
+// it once per partner instead of once per contact.
+inline double dashpot_coefficient(const PairLaw& law, double damping_mass) {
+  return law.damping_factor * std::sqrt(damping_mass * law.normal_stiffness);
+}
 
 // Force on the particle from this contact over a step dt (zero when it does not touch during
 // the step). `spring` is the tangential spring displacement delta_s kept for the pair across
@@ -88,5 +98,8 @@ bool touches_during_step(double overlap, double overlap_rate, double dt);
 // from depending on where the contact falls between sub-steps.
 Vec3 spring_dashpot_force(const PairLaw& law, const ContactKinematics& contact, double dt,
                           Vec3& spring);
+// The same with the dashpot's coefficient given (dashpot_coefficient(law, damping_mass)).
+Vec3 spring_dashpot_force(const PairLaw& law, const ContactKinematics& contact, double dashpot,
+                          double dt, Vec3& spring);
 
 }  // namespace washout::contact

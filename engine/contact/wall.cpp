@@ -18,11 +18,11 @@ double BoxObstacle::distance(const Vec3& x, Vec3& n) const {
   if (half_size.z() <= 0.0) q.z() = -std::numeric_limits<double>::infinity();
   Vec3 local = Vec3::Zero();
   double d;
-  if (q.maxCoeff() > 0.0) {  // outside: distance to the nearest face, edge or corner
+  if ((q.x() > 0.0) + (q.y() > 0.0) + (q.z() > 0.0) > 1) {  // beyond an edge or a corner
     const Vec3 outside = q.cwiseMax(0.0);
     d = outside.norm();
     for (int k = 0; k < 3; ++k) local[k] = sign_of(p[k]) * outside[k] / d;
-  } else {  // inside: the nearest face
+  } else {  // inside, or beyond one face only: the nearest face (the root of q_k^2 is q_k)
     int k;
     d = q.maxCoeff(&k);
     local[k] = sign_of(p[k]);

@@ -3,9 +3,11 @@
 // contact law (spring, dashpot, Coulomb slider, spring history).
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 #include <cstdio>
 #include <numbers>
+#include <random>
 
 #include "engine/contact/contact_material.hpp"
 #include "engine/contact/dem_contact.hpp"
@@ -145,6 +147,74 @@ TEST(ContactLaw, TangentialSpringFollowsTheTangentPlane) {
   spring_dashpot_force(law, k, 1e-6, spring);
   EXPECT_NEAR(spring.norm(), 1e-8, 1e-20);
   EXPECT_NEAR(spring.dot(k.normal), 0.0, 1e-22);
+}
+
+// The sub-steps skip roots where they cannot change the result (dem_contact.cpp): the spring's
+// turn when it already lies in the tangent plane, the slip test's root away from the Coulomb
+// limit, the dashpot's root shared by a partner's contacts. Against the law written with every
+// root, over contacts on a flat face (spring in the plane), on turned normals, and with
+// tangential forces within a few ulps of the limit, the bits are the same.
+TEST(ContactLaw, SkippedRootsGiveTheSameBits) {
+  const PairLaw law = linear_law(0.3);
+  const auto with_every_root = [&](const ContactKinematics& c, double dt, Vec3& spring) {
+    const double damping = law.damping_factor * std::sqrt(c.damping_mass * law.normal_stiffness);
+    const double normal_force = law.normal_stiffness * c.overlap + damping * c.overlap_rate;
+    const double length = spring.norm();
+    spring -= spring.dot(c.normal) * c.normal;
+    const double projected = spring.norm();
+    if (projected > 0.0) spring *= length / projected;
+    Vec3 tangential = -law.tangential_stiffness * spring - damping * c.tangential_velocity;
+    const double limit = law.friction * std::max(normal_force, 0.0);
+    const double magnitude = tangential.norm();
+    if (magnitude > limit) {
+      tangential = magnitude > 0.0 ? Vec3(tangential * (limit / magnitude)) : Vec3::Zero();
+      spring = -tangential / law.tangential_stiffness;
+    }
+    spring += dt * c.tangential_velocity;
+    return Vec3(normal_force * c.normal + tangential);
+  };
+  std::mt19937 random(5);
+  std::uniform_real_distribution<double> unit(-1.0, 1.0);
+  int slips = 0, sticks = 0, near_limit = 0;
+  for (int trial = 0; trial < 20000; ++trial) {
+    ContactKinematics k;
+    k.overlap = 1e-7 * (1.5 + 0.5 * unit(random));
+    k.overlap_rate = 1e-3 * unit(random);
+    k.normal = trial % 2 ? Vec3::UnitZ() : Vec3(unit(random), unit(random), 1.0).normalized();
+    k.tangential_velocity = 1e-3 * Vec3(unit(random), unit(random), unit(random));
+    k.tangential_velocity -= k.tangential_velocity.dot(k.normal) * k.normal;
+    k.damping_mass = 0.5;
+    Vec3 spring = 1e-7 * Vec3(unit(random), unit(random), 0.0);  // in the plane of a flat face
+    const double dt = 1e-6;
+    // Every fourth trial puts the tangential force at the limit, give or take a few ulps.
+    if (trial % 4 == 1) {  // a flat face's contact
+      const double dashpot = law.damping_factor * std::sqrt(k.damping_mass * law.normal_stiffness);
+      const double limit =
+          law.friction * std::max(law.normal_stiffness * k.overlap + dashpot * k.overlap_rate, 0.0);
+      k.tangential_velocity.setZero();
+      if (limit > 0.0) {
+        spring = Vec3(limit / law.tangential_stiffness * (1.0 + 4e-16 * unit(random)), 0.0, 0.0);
+        ++near_limit;
+      }
+    }
+    Vec3 spring_reference = spring;
+    const Vec3 f =
+        spring_dashpot_force(law, k, dashpot_coefficient(law, k.damping_mass), dt, spring);
+    const Vec3 f_reference = with_every_root(k, dt, spring_reference);
+    for (int a = 0; a < 3; ++a) {
+      ASSERT_EQ(f[a], f_reference[a]) << "trial " << trial;
+      ASSERT_EQ(spring[a], spring_reference[a]) << "trial " << trial;
+    }
+    const double limit = law.friction * std::max(f.dot(k.normal), 0.0);
+    (Vec3(f - f.dot(k.normal) * k.normal).norm() >= limit * (1.0 - 1e-12) ? slips : sticks) += 1;
+  }
+  std::printf(
+      "20000 contacts, %d slipping, %d sticking, %d within ulps of the Coulomb limit: force and "
+      "spring to the bit\n",
+      slips, sticks, near_limit);
+  EXPECT_GT(near_limit, 4000);
+  EXPECT_GT(slips, 1000);
+  EXPECT_GT(sticks, 1000);
 }
 
 // Without tension the normal force never pulls; with it (default) it may at the end of a
