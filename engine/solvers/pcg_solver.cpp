@@ -114,7 +114,8 @@ class PcgSolver final : public LinearSolver {
     return iterate(A, b, x, true, tolerance);
   }
   // The same CG iterations for each system as solve_again_to, side by side: each step's
-  // products of all the systems still iterating in one read of the matrix (full rows).
+  // products of all the systems still iterating in one read of the matrix (full rows), the
+  // rest of the step (cg_start, cg_step) the very code a single solve runs.
   std::vector<SolveReport> solve_many_again_to(const CsrMatrix& A,
                                                const std::vector<const std::vector<double>*>& b,
                                                const std::vector<std::vector<double>*>& x,
@@ -125,7 +126,7 @@ class PcgSolver final : public LinearSolver {
     preconditioner_->prepare(A, true);
     take_matrix(A, true);
     many_.resize(count);
-    std::vector<double> b_norm(count), rz(count), r_norm(count);
+    std::vector<double> b_norm(count);
     std::vector<std::size_t> active;
     std::vector<const std::vector<double>*> from;
     std::vector<std::vector<double>*> to;
@@ -142,20 +143,9 @@ class PcgSolver final : public LinearSolver {
       to.push_back(&many_[k].q);
     }
     multiply_many_counted(A, from, to);
-    for (std::size_t k : active) {
-      System& s = many_[k];
-      s.r.resize(n);
-      const std::vector<double>& bk = *b[k];
-#pragma omp parallel for schedule(static) if (n > kParallelRows)
-      for (std::size_t i = 0; i < n; ++i) s.r[i] = bk[i] - s.q[i];
-      precondition(s.r, s.z);
-      s.p = s.z;
-      const auto [rz0, rr0] = dots(s.r, s.z, s.r);
-      rz[k] = rz0;
-      r_norm[k] = std::sqrt(rr0);
-    }
+    for (std::size_t k : active) cg_start(many_[k], *b[k]);
     const auto unconverged = [&](std::size_t k) {
-      return r_norm[k] > tolerance[k] * b_norm[k] && reports[k].iterations < max_iterations_;
+      return many_[k].r_norm > tolerance[k] * b_norm[k] && reports[k].iterations < max_iterations_;
     };
     std::erase_if(active, [&](std::size_t k) { return !unconverged(k); });
     while (!active.empty()) {
@@ -164,29 +154,15 @@ class PcgSolver final : public LinearSolver {
       for (std::size_t k : active) from.push_back(&many_[k].p), to.push_back(&many_[k].q);
       multiply_many_counted(A, from, to);
       for (std::size_t k : active) {
-        System& s = many_[k];
-        std::vector<double>& xk = *x[k];
-        const double step = rz[k] / dot(s.p, s.q);
-#pragma omp parallel for schedule(static) if (n > kParallelRows)
-        for (std::size_t i = 0; i < n; ++i) {
-          xk[i] += step * s.p[i];
-          s.r[i] -= step * s.q[i];
-        }
-        precondition(s.r, s.z);
-        const auto [rz_new, rr_new] = dots(s.r, s.z, s.r);
-        const double beta = rz_new / rz[k];
-        rz[k] = rz_new;
-#pragma omp parallel for schedule(static) if (n > kParallelRows)
-        for (std::size_t i = 0; i < n; ++i) s.p[i] = s.z[i] + beta * s.p[i];
-        r_norm[k] = std::sqrt(rr_new);
+        cg_step(many_[k], *x[k]);
         ++reports[k].iterations;
       }
       std::erase_if(active, [&](std::size_t k) { return !unconverged(k); });
     }
     for (std::size_t k = 0; k < count; ++k) {
       if (b_norm[k] == 0.0) continue;
-      reports[k].relative_residual = r_norm[k] / b_norm[k];
-      reports[k].converged = r_norm[k] <= tolerance[k] * b_norm[k];
+      reports[k].relative_residual = many_[k].r_norm / b_norm[k];
+      reports[k].converged = many_[k].r_norm <= tolerance[k] * b_norm[k];
     }
     return reports;
   }
@@ -230,29 +206,61 @@ class PcgSolver final : public LinearSolver {
     solver_counters().preconditioner_seconds += seconds_since(start);
   }
 
+  // One right-hand side's CG state: residual r, preconditioned z, direction p, product q,
+  // r.z and |r|.
+  struct System {
+    std::vector<double> r, z, p, q;
+    double rz = 0.0, r_norm = 0.0;
+  };
+
+  // With q = A x: r = b - q, z = M^-1 r, p = z.
+  void cg_start(System& s, const std::vector<double>& b) {
+    const std::size_t n = b.size();
+    s.r.resize(n);
+#pragma omp parallel for schedule(static) if (n > kParallelRows)
+    for (std::size_t i = 0; i < n; ++i) s.r[i] = b[i] - s.q[i];
+    precondition(s.r, s.z);
+    s.p = s.z;
+    const auto [rz, rr] = dots(s.r, s.z, s.r);
+    s.rz = rz;
+    s.r_norm = std::sqrt(rr);
+  }
+
+  // With q = A p: one CG step of x and the state.
+  void cg_step(System& s, std::vector<double>& x) {
+    const std::size_t n = x.size();
+    const double step = s.rz / dot(s.p, s.q);
+    const auto [rz_new, rr_new] = advance(s, step, x);
+    const double beta = rz_new / s.rz;
+    s.rz = rz_new;
+#pragma omp parallel for schedule(static) if (n > kParallelRows)
+    for (std::size_t i = 0; i < n; ++i) s.p[i] = s.z[i] + beta * s.p[i];
+    s.r_norm = std::sqrt(rr_new);
+  }
+
   // x += step p, r -= step q, z = M^-1 r, and the sums r.z and r.r. With a diagonal M all in one
   // pass over fixed blocks, the same operations in the same order as the passes apart (the
   // compiler may fuse a multiply and an add elsewhere: the same bits with -ffp-contract=off, a
   // last-digit difference without); its time then counts as the loop's, not the preconditioner's.
-  std::pair<double, double> advance(double step, std::vector<double>& x) {
+  std::pair<double, double> advance(System& s, double step, std::vector<double>& x) {
     const std::size_t n = x.size();
     const std::vector<double>* diagonal = preconditioner_->inverse_diagonal();
     if (!diagonal) {
 #pragma omp parallel for schedule(static) if (n > kParallelRows)
       for (std::size_t i = 0; i < n; ++i) {
-        x[i] += step * p_[i];
-        r_[i] -= step * q_[i];
+        x[i] += step * s.p[i];
+        s.r[i] -= step * s.q[i];
       }
-      precondition(r_, z_);
-      return dots(r_, z_, r_);
+      precondition(s.r, s.z);
+      return dots(s.r, s.z, s.r);
     }
     const double* inverse = diagonal->data();
-    z_.resize(n);
+    s.z.resize(n);
     return blocked_sums(n, [&](std::size_t i) {
-      x[i] += step * p_[i];
-      r_[i] -= step * q_[i];
-      z_[i] = inverse[i] * r_[i];
-      return std::pair<double, double>{r_[i] * z_[i], r_[i] * r_[i]};
+      x[i] += step * s.p[i];
+      s.r[i] -= step * s.q[i];
+      s.z[i] = inverse[i] * s.r[i];
+      return std::pair<double, double>{s.r[i] * s.z[i], s.r[i] * s.r[i]};
     });
   }
 
@@ -269,24 +277,13 @@ class PcgSolver final : public LinearSolver {
     }
     preconditioner_->prepare(A, same_matrix);
     take_matrix(A, same_matrix);
-    r_.resize(n);
-    multiply(A, x, q_);
-#pragma omp parallel for schedule(static) if (n > kParallelRows)
-    for (std::size_t i = 0; i < n; ++i) r_[i] = b[i] - q_[i];
-    precondition(r_, z_);
-    p_ = z_;
-    auto [rz, rr] = dots(r_, z_, r_);
-    double r_norm = std::sqrt(rr);
+    System& s = one_;
+    multiply(A, x, s.q);
+    cg_start(s, b);
     int it = 0;
-    while (r_norm > tolerance * b_norm && it < max_iterations_) {
-      multiply(A, p_, q_);
-      const double step = rz / dot(p_, q_);
-      const auto [rz_new, rr_new] = advance(step, x);
-      const double beta = rz_new / rz;
-      rz = rz_new;
-#pragma omp parallel for schedule(static) if (n > kParallelRows)
-      for (std::size_t i = 0; i < n; ++i) p_[i] = z_[i] + beta * p_[i];
-      r_norm = std::sqrt(rr_new);
+    while (s.r_norm > tolerance * b_norm && it < max_iterations_) {
+      multiply(A, s.p, s.q);
+      cg_step(s, x);
       ++it;
     }
     // Only a new matrix's first solve tells whether a reused set-up still fits it: another
@@ -295,8 +292,8 @@ class PcgSolver final : public LinearSolver {
     // (counting them rebuilt BoomerAMG's hierarchy every 2-3 steps of the 3D wash-out).
     if (!same_matrix) preconditioner_->solved(it);
     report.iterations = it;
-    report.relative_residual = r_norm / b_norm;
-    report.converged = r_norm <= tolerance * b_norm;
+    report.relative_residual = s.r_norm / b_norm;
+    report.converged = s.r_norm <= tolerance * b_norm;
     return report;
   }
 
@@ -304,11 +301,8 @@ class PcgSolver final : public LinearSolver {
   std::unique_ptr<Preconditioner> preconditioner_;
   double tolerance_;
   int max_iterations_;
-  std::vector<double> r_, z_, p_, q_;
-  struct System {  // one right-hand side of solve_many_again_to
-    std::vector<double> r, z, p, q;
-  };
-  std::vector<System> many_;
+  System one_;                // a single solve's state
+  std::vector<System> many_;  // solve_many_again_to's, one per right-hand side
   bool upper_triangle_ = true;
   SymmetricProduct symmetric_;
   bool product_taken_ = false;
