@@ -121,13 +121,9 @@ CouplingReport ImplicitBodyCoupling::couple(const SphContext& ctx, const Neighbo
       for (std::size_t i = 0; i < n; ++i)
         if (work.unknown[i] >= 0) x[work.unknown[i]] = previous_[k][i];
   }
-  // An iterative solver checks each warm start's residual with a product of its own; one read
-  // of the matrix checks them all, and a response already within the tolerance is not solved.
-  std::vector<double> warm_residual(columns, 0.0), response_norm(columns, 0.0);
+  std::vector<double> response_norm(columns, 0.0);
   for (int k = 0; k < columns; ++k) response_norm[k] = norm(response_[k]);
   const bool wet = *std::max_element(response_norm.begin(), response_norm.end()) > 0.0;
-  const bool warm_checked = wet && !solver.direct();
-  if (warm_checked) residual_norms(work.matrix, response_, solution_, warm_residual, response_norm);
   // The responses are solved as a set, each to `response` times the largest of its kind
   // (translations, rotations): one the body's wet faces hardly excite (the sideways push of a
   // girder wetted on its front and floor, 1e-15 of the others) needs no iterations of its own.
@@ -143,19 +139,13 @@ CouplingReport ImplicitBodyCoupling::couple(const SphContext& ctx, const Neighbo
           largest[k] = std::max(largest[k], response_norm[j]);
     }
   }
-  // The rest side by side (one read of the matrix for all their products); residual_[k] =
-  // |B_k - A S_k|.
+  // Side by side: an iterative solver reads the matrix once for the products of all of them,
+  // the warm starts' residuals first, and a response already within its tolerance takes no
+  // iteration. residual_[k] = |B_k - A S_k|.
   std::vector<const std::vector<double>*> right_side;
   std::vector<std::vector<double>*> unsolved;
   std::vector<double> tolerance;
-  std::vector<int> which;
   for (int k = 0; k < columns; ++k) {
-    if (warm_checked && response_norm[k] > 0.0 &&
-        warm_residual[k] <= tolerances.response * largest[k]) {
-      residual_[k] = warm_residual[k];
-      continue;
-    }
-    which.push_back(k);
     right_side.push_back(&response_[k]);
     unsolved.push_back(&solution_[k]);
     tolerance.push_back(response_norm[k] > 0.0 ? tolerances.response * largest[k] / response_norm[k]
@@ -163,13 +153,13 @@ CouplingReport ImplicitBodyCoupling::couple(const SphContext& ctx, const Neighbo
   }
   const std::vector<SolveReport> solves =
       solver.solve_many_again_to(work.matrix, right_side, unsolved, tolerance);
-  for (std::size_t s = 0; s < solves.size(); ++s) {
-    if (!solves[s].converged)
+  for (int k = 0; k < columns; ++k) {
+    if (!solves[k].converged)
       throw UnstableError("the body coupling's pressure response did not converge in " +
-                          std::to_string(solves[s].iterations) + " iterations");
-    ++report.solves;
-    report.iterations += solves[s].iterations;
-    residual_[which[s]] = solves[s].relative_residual * response_norm[which[s]];
+                          std::to_string(solves[k].iterations) + " iterations");
+    if (solves[k].iterations > 0 || solver.direct()) ++report.solves;
+    report.iterations += solves[k].iterations;
+    residual_[k] = solves[k].relative_residual * response_norm[k];
   }
 
   std::vector<rigid::BodyLoad> base(bodies.size());

@@ -1,8 +1,6 @@
 #include "engine/solvers/sparse_matrix.hpp"
 
 #include <algorithm>
-#include <array>
-#include <cmath>
 
 #include "engine/solvers/row_sum.hpp"
 
@@ -65,47 +63,6 @@ void multiply_many(const CsrMatrix& A, const std::vector<const std::vector<doubl
       row_products(A, i, packed, ax);
       for (std::size_t k = 0; k < group; ++k) (*y[first + k])[i] = ax[k];
     }
-  }
-}
-
-void residual_norms(const CsrMatrix& A, const std::vector<std::vector<double>>& b,
-                    const std::vector<std::vector<double>>& x, std::vector<double>& residual,
-                    std::vector<double>& b_norm) {
-  constexpr std::size_t kBlock = 2048;  // rows a partial sum covers
-  const std::size_t count = b.size(), n = A.rows;
-  const std::size_t blocks = (n + kBlock - 1) / kBlock;
-  residual.assign(count, 0.0);
-  b_norm.assign(count, 0.0);
-  std::vector<const std::vector<double>*> xs;
-  for (const auto& v : x) xs.push_back(&v);
-  // Per block, then per pair: the squares of the residual and of b.
-  std::vector<double> partial(blocks * count * 2, 0.0);
-  for (std::size_t first = 0; first < count; first += kGroup) {
-    const std::size_t group = std::min(kGroup, count - first);
-    const std::vector<double>& packed = packed_group(xs, first, group, n);
-#pragma omp parallel for schedule(static) if (A.nonzeros() > kParallelNonzeros)
-    for (std::size_t block = 0; block < blocks; ++block) {
-      double* sums = &partial[block * count * 2];
-      const std::size_t end = std::min(n, (block + 1) * kBlock);
-      for (std::size_t i = block * kBlock; i < end; ++i) {
-        double ax[kGroup];
-        row_products(A, i, packed, ax);
-        for (std::size_t k = 0; k < group; ++k) {
-          const double bi = b[first + k][i], r = bi - ax[k];
-          sums[2 * (first + k)] += r * r;
-          sums[2 * (first + k) + 1] += bi * bi;
-        }
-      }
-    }
-  }
-  for (std::size_t block = 0; block < blocks; ++block)
-    for (std::size_t k = 0; k < count; ++k) {
-      residual[k] += partial[(block * count + k) * 2];
-      b_norm[k] += partial[(block * count + k) * 2 + 1];
-    }
-  for (std::size_t k = 0; k < count; ++k) {
-    residual[k] = std::sqrt(residual[k]);
-    b_norm[k] = std::sqrt(b_norm[k]);
   }
 }
 

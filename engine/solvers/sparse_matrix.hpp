@@ -21,11 +21,4 @@ struct CsrMatrix {
 void multiply_many(const CsrMatrix& A, const std::vector<const std::vector<double>*>& x,
                    const std::vector<std::vector<double>*>& y);
 
-// residual[k] = |b[k] - A x[k]| and b_norm[k] = |b[k]| for several pairs in one read of the
-// matrix (the body coupling's warm-started responses: six per body, checked before any is
-// solved), summed in fixed blocks of rows so that the result does not depend on the threads.
-void residual_norms(const CsrMatrix& A, const std::vector<std::vector<double>>& b,
-                    const std::vector<std::vector<double>>& x, std::vector<double>& residual,
-                    std::vector<double>& b_norm);
-
 }  // namespace washout

@@ -57,36 +57,6 @@ int iterations(LinearSolver& solver, const CsrMatrix& A) {
   return report.iterations;
 }
 
-// residual_norms: the residuals of eight pairs (a group of six and one of two) in one read of
-// the matrix, against each pair's own product, and the same bits on one thread and on two.
-TEST(PressureSolvers, ResidualNormsOfSeveralPairsInOneRead) {
-  const CsrMatrix A = laplacian_3d(24);  // 13,824 rows: more than one block of rows
-  std::vector<std::vector<double>> b(8), x(8);
-  for (std::size_t k = 0; k < b.size(); ++k) {
-    b[k].resize(A.rows);
-    x[k].resize(A.rows);
-    for (std::size_t i = 0; i < A.rows; ++i) {
-      b[k][i] = std::cos(0.003 * double(i * (k + 1)));
-      x[k][i] = std::sin(0.002 * double(i) + double(k));
-    }
-  }
-  std::vector<double> residual, b_norm, residual_one_thread, b_norm_one_thread;
-  residual_norms(A, b, x, residual, b_norm);
-  const int threads = omp_get_max_threads();
-  omp_set_num_threads(1);
-  residual_norms(A, b, x, residual_one_thread, b_norm_one_thread);
-  omp_set_num_threads(threads);
-  for (std::size_t k = 0; k < b.size(); ++k) {
-    double bb = 0.0;
-    for (double v : b[k]) bb += v * v;
-    const double expected = relative_residual(A, b[k], x[k]) * std::sqrt(bb);
-    EXPECT_NEAR(residual[k], expected, 1e-12 * expected) << "pair " << k;
-    EXPECT_NEAR(b_norm[k], std::sqrt(bb), 1e-12 * std::sqrt(bb)) << "pair " << k;
-    EXPECT_EQ(residual[k], residual_one_thread[k]) << "pair " << k;
-    EXPECT_EQ(b_norm[k], b_norm_one_thread[k]) << "pair " << k;
-  }
-}
-
 // solve_many_again_to: seven right-hand sides of one matrix iterated side by side (the body
 // coupling's responses), each to its own tolerance, against the same solves one at a time: the
 // same iterations (the same CG, only the products' sums in another order) and each residual
@@ -125,7 +95,9 @@ TEST(PressureSolvers, SeveralRightHandSidesSideBySide) {
         for (double v : together[k]) ASSERT_EQ(v, 0.0);
         continue;
       }
-      if (k == 3) EXPECT_EQ(reports[k].iterations, 0);
+      if (k == 3) {
+        EXPECT_EQ(reports[k].iterations, 0);
+      }
       EXPECT_LE(relative_residual(A, b[k], together[k]), tolerance[k] * 1.000001)
           << name << " system " << k;
     }
