@@ -1,6 +1,7 @@
 #include "engine/fluid/wall_velocity_response.hpp"
 
 #include <Eigen/Geometry>
+#include <atomic>
 #include <cmath>
 
 namespace washout {
@@ -53,15 +54,26 @@ void fluid_beside_bodies(const SphContext& ctx, const NeighborGrid& grid, const 
   const std::size_t n = p.fluid_count;
   const double r2max = 4.0 * ctx.h * ctx.h;
   mark.assign(n, 0);
-  // A body has few particles beside the fluid's: searched on one thread.
+  rows.clear();  // first the bodies' particles, then the rows
   for (std::size_t w = n; w < p.size(); ++w) {
     const std::int32_t b = p.body[w];
-    if (b < 0 || first_column[b] < 0) continue;
+    if (b >= 0 && first_column[b] >= 0) rows.push_back(static_cast<std::uint32_t>(w));
+  }
+  // The searches around them on all threads (serial they were 0.5 s of the README wash-out);
+  // threads that find the same fluid particle all write the same 1, through an atomic
+  // reference so that the writes are defined.
+  const std::size_t count = rows.size();
+#pragma omp parallel for schedule(static)
+  for (std::size_t k = 0; k < count; ++k) {
+    const std::uint32_t w = rows[k];
     const double x[3] = {p.position[0][w], p.position[1][w], p.position[2][w]};
     grid.for_each_candidate_below(x, static_cast<std::uint32_t>(n), [&](std::uint32_t f) {
       double d[3] = {x[0] - p.position[0][f], x[1] - p.position[1][f], x[2] - p.position[2][f]};
       if (ctx.periodic.any()) ctx.periodic.minimum_image(d);
-      if (d[0] * d[0] + d[1] * d[1] + d[2] * d[2] < r2max) mark[f] = 1;
+      if (d[0] * d[0] + d[1] * d[1] + d[2] * d[2] < r2max) {
+        std::atomic_ref<std::uint8_t> marked(mark[f]);
+        if (!marked.load(std::memory_order_relaxed)) marked.store(1, std::memory_order_relaxed);
+      }
     });
   }
   rows.clear();

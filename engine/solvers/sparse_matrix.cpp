@@ -30,10 +30,12 @@ const std::vector<double>& packed_group(const std::vector<const std::vector<doub
                                         std::size_t first, std::size_t group, std::size_t n) {
   thread_local std::vector<double> buffer;
   std::vector<double>& packed = buffer;
-  packed.assign(n * kGroup, 0.0);
+  packed.resize(n * kGroup);  // every value written below: no zeroing pass first
 #pragma omp parallel for schedule(static) if (n > 4096)
-  for (std::size_t j = 0; j < n; ++j)
+  for (std::size_t j = 0; j < n; ++j) {
     for (std::size_t k = 0; k < group; ++k) packed[j * kGroup + k] = (*x[first + k])[j];
+    for (std::size_t k = group; k < kGroup; ++k) packed[j * kGroup + k] = 0.0;
+  }
   return packed;
 }
 
