@@ -1,6 +1,8 @@
 #include "engine/sim/body_surface_pressure.hpp"
 
 #include <algorithm>
+#include <cmath>
+#include <limits>
 
 #include "engine/core/fluid_interpolation.hpp"
 
@@ -35,6 +37,43 @@ void body_surface_pressure(const SphContext& ctx, const NeighborGrid& grid, cons
     }
     pressure[k] = value;
   }
+}
+
+FluidBox fluid_box(const Particles& p) {
+  FluidBox box;
+  for (int a = 0; a < 3; ++a) {
+    const std::vector<double>& x = p.position[a];
+    double low = std::numeric_limits<double>::infinity(), high = -low;
+#pragma omp parallel for schedule(static) reduction(min : low) reduction(max : high)
+    for (std::size_t i = 0; i < p.fluid_count; ++i) {
+      low = std::min(low, x[i]);
+      high = std::max(high, x[i]);
+    }
+    box.lower[a] = low;
+    box.upper[a] = high;
+  }
+  return box;
+}
+
+bool beyond_fluid_reach(const SphContext& ctx, const Particles& p, const FluidBox& fluid,
+                        std::size_t first, std::size_t count) {
+  if (ctx.periodic.any()) return false;
+  double lower[3], upper[3], mirror = 0.0;
+  for (int a = 0; a < 3; ++a) {
+    lower[a] = std::numeric_limits<double>::infinity();
+    upper[a] = -lower[a];
+  }
+  for (std::size_t i = first; i < first + count; ++i) {
+    mirror = std::max(mirror, 2.0 * std::abs(p.wall_distance[i]));
+    for (int a = 0; a < 3; ++a) {
+      lower[a] = std::min(lower[a], p.position[a][i]);
+      upper[a] = std::max(upper[a], p.position[a][i]);
+    }
+  }
+  const double reach = 2.0 * ctx.h + mirror + 1e-9;  // 1e-9 m: the rounding of the distances
+  for (int a = 0; a < ctx.dim; ++a)
+    if (fluid.lower[a] > upper[a] + reach || fluid.upper[a] < lower[a] - reach) return true;
+  return false;
 }
 
 void build_surface_stencil(const SphContext& ctx, const NeighborGrid& grid, const Particles& p,

@@ -26,6 +26,20 @@ void body_surface_pressure(const SphContext& ctx, const NeighborGrid& grid, cons
                            const Vec3& gravity, std::span<const std::uint32_t> particles,
                            std::vector<double>& pressure);
 
+// The fluid's bounding box, [lower, upper] per axis (empty: lower > upper).
+struct FluidBox {
+  double lower[3], upper[3];
+};
+FluidBox fluid_box(const Particles& p);
+
+// True when no fluid particle can be in reach of body particles [first, first + count): within
+// 2h of a particle (the PPE's neighbours, the fluid beside a body) or of its mirror point
+// x + 2 d n (the surface pressure's search). Their box widened by 2h + max |2 d| and the fluid's
+// box are apart; never true in a periodic domain (the boxes would need the images). Such a body
+// (the girder before the wave) has a zero surface pressure and zero responses without a search.
+bool beyond_fluid_reach(const SphContext& ctx, const Particles& p, const FluidBox& fluid,
+                        std::size_t first, std::size_t count);
+
 // The same interpolation as a linear map of the pressure on the PPE's unknowns, without the
 // hydrostatic carry and the free-surface clamp: what a pressure response field or a change of
 // the pressure gives (the body coupling evaluates it seven times or more a step, so the fluid

@@ -100,6 +100,46 @@ CouplingReport ImplicitBodyCoupling::couple(const SphContext& ctx, const Neighbo
   }
   bodies.compute_fluid_loads(ctx, grid, p, gravity);  // F(P0)
   if (columns == 0 || work.matrix.rows == 0) return report;
+  std::vector<rigid::BodyLoad> base(bodies.size());
+  for (std::size_t b = 0; b < bodies.size(); ++b) base[b] = bodies.fluid_load(b);
+  const std::size_t n = p.fluid_count;
+  // The bodies' new loads F(P0) + change, and their particles' accelerations (the walls'
+  // velocities of the next step's markers).
+  const auto finish = [&](const Eigen::VectorXd& dxi, const Eigen::VectorXd& load_change) {
+    for (std::size_t b = 0; b < bodies.size(); ++b) {
+      const int first = first_column[b];
+      if (first < 0) continue;
+      Vec3 dforce, dtorque;
+      unpack(load_change, dim, first, dforce, dtorque);
+      rigid::BodyLoad changed = base[b];
+      changed.force += dforce;
+      changed.torque += dtorque;
+      bodies.set_fluid_load(b, changed);
+    }
+    for (std::size_t w = n; w < p.size(); ++w) {
+      const std::int32_t b = p.body[w];
+      if (b < 0 || first_column[b] < 0) continue;
+      Vec3 dT, dw;
+      unpack(dxi, dim, first_column[b], dT, dw);
+      const Vec3 du = dT + dw.cross(p.x(w) - centre[b]);
+      for (int a = 0; a < 3; ++a) work.boundary.wall_acceleration[a][w] = du[a] / dt;
+    }
+  };
+  const auto velocity_change = [&](const Eigen::PartialPivLU<Eigen::MatrixXd>& K) {
+    Eigen::VectorXd dxi = K.solve(coupled_load(base, first_column, bodies, dim, columns, gravity));
+    if (!dxi.allFinite()) throw UnstableError("the body coupling's velocity system is singular");
+    return dxi;
+  };
+  if (bodies.dry()) {
+    // No fluid near any body (the girder before the wave): the responses are zero, the pressure
+    // stays P0, and the last step's responses are no warm start for the next.
+    previous_.assign(columns, {});
+    const Eigen::MatrixXd G = Eigen::MatrixXd::Zero(columns, columns);
+    finish(velocity_change(Eigen::PartialPivLU<Eigen::MatrixXd>(
+               coupled_matrix(G, first_column, bodies, dim, dt))),
+           Eigen::VectorXd::Zero(columns));
+    return report;
+  }
 
   // S_k = A^-1 B_k, warm-started from the last step's S_k (by particle).
   response_.resize(columns);
@@ -108,7 +148,6 @@ CouplingReport ImplicitBodyCoupling::couple(const SphContext& ctx, const Neighbo
   solution_.resize(columns);
   previous_.resize(columns);
   residual_.assign(columns, 0.0);
-  const std::size_t n = p.fluid_count;
   const auto norm = [](const std::vector<double>& v) {
     double s = 0.0;
     for (double x : v) s += x * x;
@@ -162,9 +201,7 @@ CouplingReport ImplicitBodyCoupling::couple(const SphContext& ctx, const Neighbo
     residual_[k] = solves[k].relative_residual * response_norm[k];
   }
 
-  std::vector<rigid::BodyLoad> base(bodies.size());
-  for (std::size_t b = 0; b < bodies.size(); ++b) base[b] = bodies.fluid_load(b);
-  // A body with no fluid beside it (the girder before the wave) has zero responses and loads.
+  // A body with no fluid beside it has zero responses and loads.
   Eigen::MatrixXd G = Eigen::MatrixXd::Zero(columns, columns);
   if (wet) {
     bodies.build_linear_load(ctx, grid, p, work.unknown);
@@ -173,8 +210,7 @@ CouplingReport ImplicitBodyCoupling::couple(const SphContext& ctx, const Neighbo
   }
   const Eigen::PartialPivLU<Eigen::MatrixXd> K(coupled_matrix(G, first_column, bodies, dim, dt));
   const Eigen::VectorXd load = coupled_load(base, first_column, bodies, dim, columns, gravity);
-  Eigen::VectorXd dxi = K.solve(load);
-  if (!dxi.allFinite()) throw UnstableError("the body coupling's velocity system is singular");
+  Eigen::VectorXd dxi = velocity_change(K);
 
   // The responses only enter the pressure as sum_k S_k dxi_k, dxi a step's small change of the
   // bodies' velocities: they need not meet the pressure solve's tolerance, only their share of
@@ -232,28 +268,11 @@ CouplingReport ImplicitBodyCoupling::couple(const SphContext& ctx, const Neighbo
   }
 
   // The loads, pressure and wall accelerations that belong to the new velocities.
-  for (std::size_t b = 0; b < bodies.size(); ++b) {
-    const int first = first_column[b];
-    if (first < 0) continue;
-    Vec3 dforce, dtorque;
-    unpack(load_change, dim, first, dforce, dtorque);
-    rigid::BodyLoad changed = base[b];
-    changed.force += dforce;
-    changed.torque += dtorque;
-    bodies.set_fluid_load(b, changed);
-  }
   for (std::size_t i = 0; i < n; ++i) {
     const std::int32_t row = work.unknown[i];
     if (row >= 0) p.pressure[i] = coupled_[row];
   }
-  for (std::size_t w = n; w < p.size(); ++w) {
-    const std::int32_t b = p.body[w];
-    if (b < 0 || first_column[b] < 0) continue;
-    Vec3 dT, dw;
-    unpack(dxi, dim, first_column[b], dT, dw);
-    const Vec3 du = dT + dw.cross(p.x(w) - centre[b]);
-    for (int a = 0; a < 3; ++a) work.boundary.wall_acceleration[a][w] = du[a] / dt;
-  }
+  finish(dxi, load_change);
   return report;
 }
 

@@ -143,9 +143,20 @@ void RigidBodySystem::set_prescribed_velocities(double t, Particles& p) const {
 // n_i dS_i the particle's share of the surface (body_builder.hpp).
 void RigidBodySystem::compute_fluid_loads(const SphContext& ctx, const NeighborGrid& grid,
                                           const Particles& p, const Vec3& gravity) {
-  body_surface_pressure(ctx, grid, p, gravity, surface_particles_, surface_pressure_);
+  dry_ = no_fluid_near(ctx, p);
+  if (dry_)  // what the search would find: no fluid around any mirror point, a pressure of 0
+    surface_pressure_.assign(surface_particles_.size(), 0.0);
+  else
+    body_surface_pressure(ctx, grid, p, gravity, surface_particles_, surface_pressure_);
   loads_of_surface_pressure(p);
   fluid_loads_ = scratch_loads_;
+}
+
+bool RigidBodySystem::no_fluid_near(const SphContext& ctx, const Particles& p) const {
+  const FluidBox fluid = fluid_box(p);
+  for (std::size_t b = 0; b < size(); ++b)
+    if (!beyond_fluid_reach(ctx, p, fluid, first_[b], models_[b].offset.size())) return false;
+  return true;
 }
 
 void RigidBodySystem::build_linear_load(const SphContext& ctx, const NeighborGrid& grid,

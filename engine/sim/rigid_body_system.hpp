@@ -52,9 +52,15 @@ class RigidBodySystem {
   void place_particles(Particles& p) const;
   // Prescribed bodies' particle velocities at the new time t (before the pressure solve).
   void set_prescribed_velocities(double t, Particles& p) const;
-  // F_f, M_f of every body from the pressure just solved (fluid not yet moved).
+  // F_f, M_f of every body from the pressure just solved (fluid not yet moved). While no fluid
+  // comes near any body (dry(): the girder before the wave), the surface pressure is zero
+  // without a search, the same loads.
   void compute_fluid_loads(const SphContext& ctx, const NeighborGrid& grid, const Particles& p,
                            const Vec3& gravity);
+  // Whether, at the last compute_fluid_loads, no fluid particle lay within the kernel's support
+  // (2h) of any body particle or of its surface's mirror point: the fluid's bounding box and
+  // every body's, widened by that reach, apart. Never in a periodic domain.
+  bool dry() const { return dry_; }
   // The load as a linear map of a pressure field on the PPE's rows (a response field or a change
   // of the pressure: no hydrostatic carry, no free-surface clamp; body_surface_pressure.hpp):
   // the fluid around the surface is searched once by build_linear_load, after the pressure
@@ -94,6 +100,8 @@ class RigidBodySystem {
   void place_body(std::size_t b, Particles& p) const;
   // scratch_loads_ from surface_pressure_ (METHOD.md Rigid bodies).
   void loads_of_surface_pressure(const Particles& p);
+  // dry() for the particles as they are now.
+  bool no_fluid_near(const SphContext& ctx, const Particles& p) const;
   // x (world) in body b's reference pose, where its shape is defined.
   Vec3 reference_point(std::size_t b, const Vec3& x) const;
 
@@ -110,6 +118,7 @@ class RigidBodySystem {
   std::vector<std::uint32_t> surface_particles_;
   std::vector<std::size_t> surface_begin_;
   std::vector<double> surface_pressure_;
+  bool dry_ = false;
   SurfaceStencil surface_stencil_;             // build_linear_load's
   rigid::Vec3Array load_point_, load_normal_;  // scratch
   contact::ContactScene contact_;
