@@ -125,8 +125,10 @@ CouplingReport ImplicitBodyCoupling::couple(const SphContext& ctx, const Neighbo
       for (int a = 0; a < 3; ++a) work.boundary.wall_acceleration[a][w] = du[a] / dt;
     }
   };
+  const Eigen::VectorXd load = coupled_load(base, first_column, bodies, dim, columns, gravity);
+  // (M / dt - G) dxi = load
   const auto velocity_change = [&](const Eigen::PartialPivLU<Eigen::MatrixXd>& K) {
-    Eigen::VectorXd dxi = K.solve(coupled_load(base, first_column, bodies, dim, columns, gravity));
+    Eigen::VectorXd dxi = K.solve(load);
     if (!dxi.allFinite()) throw UnstableError("the body coupling's velocity system is singular");
     return dxi;
   };
@@ -209,7 +211,6 @@ CouplingReport ImplicitBodyCoupling::couple(const SphContext& ctx, const Neighbo
       linear_load(ctx, p, bodies, first_column, solution_[k], G.col(k));
   }
   const Eigen::PartialPivLU<Eigen::MatrixXd> K(coupled_matrix(G, first_column, bodies, dim, dt));
-  const Eigen::VectorXd load = coupled_load(base, first_column, bodies, dim, columns, gravity);
   Eigen::VectorXd dxi = velocity_change(K);
 
   // The responses only enter the pressure as sum_k S_k dxi_k, dxi a step's small change of the
