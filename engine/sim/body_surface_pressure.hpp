@@ -26,7 +26,8 @@ void body_surface_pressure(const SphContext& ctx, const NeighborGrid& grid, cons
                            const Vec3& gravity, std::span<const std::uint32_t> particles,
                            std::vector<double>& pressure);
 
-// The fluid's bounding box, [lower, upper] per axis (empty: lower > upper).
+// The bounding box of the fluid the searches can find (retired particles left out), [lower,
+// upper] per axis (empty: lower > upper).
 struct FluidBox {
   double lower[3], upper[3];
 };
