@@ -18,8 +18,13 @@ double accumulate_fluid_at(const SphContext& ctx, const NeighborGrid& grid, cons
                            const double m[3], Accumulate&& accumulate) {
   const double r2max = 4.0 * ctx.h * ctx.h;
   double weight_sum = 0.0;
+  // The arrays' addresses in locals: read through p, they were loaded again after every store
+  // the visit makes (any of them might have changed a vector's pointer).
+  const double* X = p.position[0].data();
+  const double* Y = p.position[1].data();
+  const double* Z = p.position[2].data();
   grid.for_each_candidate_below(m, static_cast<std::uint32_t>(p.fluid_count), [&](std::uint32_t f) {
-    double d[3] = {m[0] - p.position[0][f], m[1] - p.position[1][f], m[2] - p.position[2][f]};
+    double d[3] = {m[0] - X[f], m[1] - Y[f], m[2] - Z[f]};
     if (ctx.periodic.any()) ctx.periodic.minimum_image(d);
     const double r2 = d[0] * d[0] + d[1] * d[1] + d[2] * d[2];
     if (r2 >= r2max) return;

@@ -115,9 +115,10 @@ void NeighborGrid::for_each_candidate_below(const double p[3], std::uint32_t lim
                                             Visit&& visit) const {
   // A row of cells at a time, skipping the walls: stopping at a cell's first wall would need a
   // range per cell, and 125 small ranges cost more than the walls' index tests.
+  const std::uint32_t* sorted = sorted_.data();  // in a local: the visits' stores cannot move it
   for_each_cell_around(p, [&](std::uint32_t begin, std::uint32_t end) {
     for (std::uint32_t k = begin; k < end; ++k)
-      if (sorted_[k] < limit) visit(sorted_[k]);
+      if (sorted[k] < limit) visit(sorted[k]);
   });
 }
 

@@ -50,15 +50,19 @@ void assemble_ppe_matrix(const SphContext& ctx, const NeighborList& list, const 
       }
       continue;
     }
+    // The flags gathered in locals and stored once: a byte stored in the loop might alias any
+    // array's address, which the compiler would then load again at every neighbour.
     std::int64_t count = 1;  // the diagonal
+    bool touches_surface = work.free_surface[i] != 0, anchored = touches_surface;
     for (std::uint64_t k = list.offset[i]; k < list.offset[i + 1]; ++k) {
       const std::size_t j = list.index[k];
       if (j >= n) continue;
       if (work.unknown[j] >= 0) ++count;
-      if (work.free_surface[j]) flags.touches_surface[row] = 1;
-      if (work.unknown[j] < 0) flags.anchored[row] = 1;
+      touches_surface |= work.free_surface[j] != 0;
+      anchored |= work.unknown[j] < 0;
     }
-    if (work.free_surface[i]) flags.touches_surface[row] = flags.anchored[row] = 1;
+    flags.touches_surface[row] = touches_surface;
+    flags.anchored[row] = anchored;
     A.row_start[row + 1] = count;
   }
   for (std::size_t r = 0; r < rows; ++r) A.row_start[r + 1] += A.row_start[r];

@@ -77,8 +77,10 @@ void subtract_ppe_source(const SphContext& ctx, const NeighborList& list, const 
     const double div_u =
         divergence(ctx, list, p, i, u_i, [&](const NeighborPair& q, double u_j[3]) {
           const std::size_t j = q.j;
+          // u_j is written in all three components (the divergence reads the first dim): with
+          // constant bounds the writes stay in registers. Every array here holds three.
           if (j < n) {
-            for (int a = 0; a < ctx.dim; ++a) u_j[a] = work.u_star[a][j];
+            for (int a = 0; a < 3; ++a) u_j[a] = work.u_star[a][j];
           } else if (walls.dynamic) {
             // The wall's velocity plus the normal part of the virtual marker's velocity relative to
             // it (the fluid's, mirrored at the start of the step), with the same body-force
@@ -96,10 +98,10 @@ void subtract_ppe_source(const SphContext& ctx, const NeighborList& list, const 
                 facing += p.normal[a][j] * p.normal[a][clearance.wall];
               if (facing > 0.5) marker_un += clearance.speed;
             }
-            for (int a = 0; a < ctx.dim; ++a)
+            for (int a = 0; a < 3; ++a)
               u_j[a] = p.velocity[a][j] + marker_un * p.normal[a][j] + dt * gravity[a];
           } else {
-            for (int a = 0; a < ctx.dim; ++a) u_j[a] = u_i[a];  // no share of the divergence
+            for (int a = 0; a < 3; ++a) u_j[a] = u_i[a];  // no share of the divergence
           }
         });
     // Within a kernel support of the free surface the summation density is low only because the
