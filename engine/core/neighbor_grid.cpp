@@ -9,14 +9,6 @@
 #include "engine/core/vector_growth.hpp"
 
 namespace washout {
-namespace {
-
-bool retired(const Particles& p, std::size_t i) {
-  return p.kind[i] == static_cast<std::uint8_t>(ParticleKind::Retired);
-}
-
-}  // namespace
-
 long NeighborGrid::cell_coordinate(double x, int axis) const {
   long c = static_cast<long>(std::floor((x - origin_[axis]) / cell_size_[axis]));
   if (periodic_.periodic[axis]) return (c % cells_[axis] + cells_[axis]) % cells_[axis];
@@ -53,7 +45,7 @@ void NeighborGrid::build(const Particles& particles, double radius, const Period
     const double* x = particles.position[a].data();
 #pragma omp parallel for reduction(min : lo) reduction(max : hi)
     for (std::size_t i = 0; i < n; ++i) {
-      if (retired(particles, i)) continue;
+      if (particles.retired(i)) continue;
       lo = std::min(lo, x[i]);
       hi = std::max(hi, x[i]);
     }
@@ -71,7 +63,7 @@ void NeighborGrid::build(const Particles& particles, double radius, const Period
   cell_of_.resize(n);
 #pragma omp parallel for
   for (std::size_t i = 0; i < n; ++i) {
-    if (retired(particles, i)) {
+    if (particles.retired(i)) {
       cell_of_[i] = outside;
       continue;
     }
@@ -122,7 +114,7 @@ void NeighborGrid::build_list(const Particles& particles, std::size_t query_coun
   list.offset.assign(query_count + 1, 0);
   list_blocks_.fill(query_count, [&](std::size_t first, std::size_t last, auto& out) {
     for (std::size_t i = first; i < last; ++i) {
-      if (retired(particles, i)) continue;
+      if (particles.retired(i)) continue;
       const double p[3] = {X[0][i], X[1][i], X[2][i]};
       const std::size_t row_start = out.filled();
       for_each_cell_around(p, [&](std::uint32_t begin, std::uint32_t end) {

@@ -12,12 +12,11 @@ namespace washout {
 
 FluidOrder fluid_cell_order(const Particles& p, double cell_size) {
   const std::size_t n = p.fluid_count;
-  const auto retired = static_cast<std::uint8_t>(ParticleKind::Retired);
   double lo[3] = {0, 0, 0}, hi[3] = {0, 0, 0};
   for (int a = 0; a < p.dim; ++a) {
     lo[a] = std::numeric_limits<double>::max(), hi[a] = std::numeric_limits<double>::lowest();
     for (std::size_t i = 0; i < n; ++i) {
-      if (p.kind[i] == retired) continue;
+      if (p.retired(i)) continue;
       lo[a] = std::min(lo[a], p.position[a][i]);
       hi[a] = std::max(hi[a], p.position[a][i]);
     }
@@ -36,7 +35,7 @@ FluidOrder fluid_cell_order(const Particles& p, double cell_size) {
   for (std::int64_t s = 0; s < static_cast<std::int64_t>(n); ++s) {
     const auto i = static_cast<std::size_t>(s);
     std::uint64_t key = 0;
-    if (p.kind[i] == retired) {
+    if (p.retired(i)) {
       key = std::numeric_limits<std::uint64_t>::max();
     } else {
       for (int k = 0; k < p.dim; ++k) {

@@ -32,6 +32,10 @@ struct Particles {
 
   std::size_t size() const { return kind.size(); }
   bool is_fluid(std::size_t i) const { return i < fluid_count; }
+  // A fluid particle that left the domain: in no cell of the grid, at rest, out of every sum.
+  bool retired(std::size_t i) const {
+    return kind[i] == static_cast<std::uint8_t>(ParticleKind::Retired);
+  }
   Vec3 x(std::size_t i) const { return {position[0][i], position[1][i], position[2][i]}; }
   Vec3 u(std::size_t i) const { return {velocity[0][i], velocity[1][i], velocity[2][i]}; }
 

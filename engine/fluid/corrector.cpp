@@ -118,7 +118,7 @@ double advance_positions(const SphContext& ctx, Particles& p, double dt) {
   double max_speed2 = 0.0;
 #pragma omp parallel for schedule(static) reduction(max : max_speed2)
   for (std::size_t i = 0; i < n; ++i) {
-    if (p.kind[i] == static_cast<std::uint8_t>(ParticleKind::Retired)) continue;  // left the domain
+    if (p.retired(i)) continue;  // left the domain
     double s2 = 0.0;
     for (int a = 0; a < ctx.dim; ++a) {
       const double v = p.velocity[a][i];

@@ -41,13 +41,12 @@ void body_surface_pressure(const SphContext& ctx, const NeighborGrid& grid, cons
 
 FluidBox fluid_box(const Particles& p) {
   FluidBox box;
-  const auto retired = static_cast<std::uint8_t>(ParticleKind::Retired);
   for (int a = 0; a < 3; ++a) {
     const std::vector<double>& x = p.position[a];
     double low = std::numeric_limits<double>::infinity(), high = -low;
 #pragma omp parallel for schedule(static) reduction(min : low) reduction(max : high)
     for (std::size_t i = 0; i < p.fluid_count; ++i) {
-      if (p.kind[i] == retired) continue;  // in no cell of the grid: no search finds it
+      if (p.retired(i)) continue;  // in no cell of the grid: no search finds it
       low = std::min(low, x[i]);
       high = std::max(high, x[i]);
     }

@@ -396,7 +396,6 @@ void Simulation::solve_pressure(StepInProgress& now) {
 void Simulation::check_health(StepReport& report) {
   const std::size_t n = particles_.fluid_count;
   const int dim = particles_.dim;
-  const auto retired = static_cast<std::uint8_t>(ParticleKind::Retired);
   // The retired stay where they left, at rest: whatever the step's stages gave them goes.
   for (std::uint32_t i : retired_) {
     for (int a = 0; a < 3; ++a) particles_.velocity[a][i] = 0.0;
@@ -409,7 +408,7 @@ void Simulation::check_health(StepReport& report) {
 #pragma omp parallel for reduction(min : bad_value, too_fast, escaped) \
     reduction(+ : energy, escaped_count)
   for (std::size_t i = 0; i < n; ++i) {
-    if (particles_.kind[i] == retired) continue;
+    if (particles_.retired(i)) continue;
     double s2 = 0.0;
     bool finite = true;
     for (int a = 0; a < dim; ++a) {
