@@ -9,6 +9,7 @@
 //   bench_solvers FILE.ppe ... [--solvers pcg,pcg_amg,cholmod] [--tolerance T] [--cold]
 //                 [--repeat R] [--sequence] [--reuse N] [--strong S] [--aggressive L] [--interp I]
 //                 [--pmax P] [--coarsen C] [--relax DOWN,UP] [--block-rows B]
+//                 [--cycle-precision single|double]
 #include <omp.h>
 
 #include <algorithm>
@@ -31,7 +32,8 @@ int usage() {
       stderr,
       "usage: bench_solvers FILE.ppe ... [--solvers pcg,pcg_amg,cholmod] [--tolerance T] "
       "[--cold] [--repeat R] [--sequence] [--reuse N] [--strong S] [--aggressive L] [--interp I] "
-      "[--pmax P] [--coarsen C] [--relax DOWN,UP] [--block-rows B]\n");
+      "[--pmax P] [--coarsen C] [--relax DOWN,UP] [--block-rows B] "
+      "[--cycle-precision single|double]\n");
   return 1;
 }
 
@@ -72,6 +74,10 @@ int main(int argc, char** argv) {
       amg.aggressive_levels = std::atoi(argv[++k]);
     } else if (a == "--interp" && has_value) {
       amg.interpolation = std::atoi(argv[++k]);
+    } else if (a == "--cycle-precision" && has_value) {
+      const std::string p = argv[++k];
+      if (p != "single" && p != "double") return usage();
+      amg.single_precision_cycle = p == "single";
     } else if (a == "--block-rows" && has_value) {
       amg.cycle_block_rows = static_cast<std::size_t>(std::atol(argv[++k]));
     } else if (a == "--pmax" && has_value) {

@@ -199,7 +199,10 @@ class BoomerAmg final : public Preconditioner {
     }
     const bool reuse = amg_ && rows_ == A.rows && uses_ < options_.reuse_solves && !stale_;
     if (!reuse) {
+      // The threaded cycle's views of the old hierarchy go with it, and its rounded copies are
+      // freed before hypre's set-up allocates the new one.
       if (amg_) HYPRE_BoomerAMGDestroy(amg_);
+      vcycle_.release();
       if (setup_matrix_) hypre_ParCSRMatrixDestroy(setup_matrix_);
       amg_ = nullptr;
       setup_matrix_ = nullptr;
@@ -235,6 +238,8 @@ class BoomerAmg final : public Preconditioner {
         setup_matrix_ = nullptr;
       }
     }
+    // The cycle's fine level is this solve's matrix (in single precision a rounded copy of it).
+    if (threaded_) vcycle_.set_fine(view(matrix_ ? matrix_ : setup_matrix_));
     ++uses_;
     counters.setup_seconds += seconds_since(start);
     counters.setup_cpu_seconds += thread_cpu_seconds() - cpu_start;
@@ -251,7 +256,7 @@ class BoomerAmg final : public Preconditioner {
     const std::size_t n = r.size();
     z.resize(n);
     if (threaded_) {
-      vcycle_.apply(view(matrix_ ? matrix_ : setup_matrix_), r.data(), z.data());
+      vcycle_.apply(r.data(), z.data());
       return;
     }
     HYPRE_Real* f = data(f_);
@@ -306,7 +311,9 @@ class BoomerAmg final : public Preconditioner {
     std::vector<CsrView> A(levels), P(levels - 1);
     for (int l = 1; l < levels; ++l) A[l] = view(hypre_ParAMGDataAArray(data)[l]);
     for (int l = 0; l + 1 < levels; ++l) P[l] = view(hypre_ParAMGDataPArray(data)[l]);
-    vcycle_.build(A, P, options_.cycle_block_rows);
+    vcycle_.build(A, P, options_.cycle_block_rows,
+                  options_.single_precision_cycle ? CyclePrecision::single_precision
+                                                  : CyclePrecision::double_precision);
   }
 
   void record_hierarchy(const CsrMatrix& A) {

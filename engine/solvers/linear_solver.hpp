@@ -79,6 +79,9 @@ struct AmgOptions {
   // hypre's cycle for a matrix too small for two such blocks.
   bool threaded_cycle = true;
   std::size_t cycle_block_rows = 0;
+  // The threaded V-cycle reads its matrices' values in single precision (threaded_vcycle.hpp):
+  // a third less memory traffic in a solve bound by it; CG around it stays in double.
+  bool single_precision_cycle = true;
   // hypre's matrix borrows the solve's columns and values when every row holds its diagonal
   // first (the PPE assembly's matrices), instead of a copy of them; false: always the copy.
   bool borrow_matrix = true;

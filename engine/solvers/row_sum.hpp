@@ -9,24 +9,26 @@
 
 namespace washout {
 
-// x_at(j) gives the vector's value at column j (a sweep reads some columns from a copy).
-template <class Index, class XAt>
-inline double sparse_row_sum(const double* value, const Index* column, std::int64_t begin,
+// x_at(j) gives the vector's value at column j (a sweep reads some columns from a copy). The
+// values may be stored in single precision (a preconditioner's, threaded_vcycle.hpp); the sums
+// are always in double.
+template <class Value, class Index, class XAt>
+inline double sparse_row_sum(const Value* value, const Index* column, std::int64_t begin,
                              std::int64_t end, XAt&& x_at) {
   double s0 = 0.0, s1 = 0.0, s2 = 0.0, s3 = 0.0;
   std::int64_t k = begin;
   for (; k + 4 <= end; k += 4) {
-    s0 += value[k] * x_at(column[k]);
-    s1 += value[k + 1] * x_at(column[k + 1]);
-    s2 += value[k + 2] * x_at(column[k + 2]);
-    s3 += value[k + 3] * x_at(column[k + 3]);
+    s0 += double(value[k]) * x_at(column[k]);
+    s1 += double(value[k + 1]) * x_at(column[k + 1]);
+    s2 += double(value[k + 2]) * x_at(column[k + 2]);
+    s3 += double(value[k + 3]) * x_at(column[k + 3]);
   }
-  for (; k < end; ++k) s0 += value[k] * x_at(column[k]);
+  for (; k < end; ++k) s0 += double(value[k]) * x_at(column[k]);
   return (s0 + s1) + (s2 + s3);
 }
 
-template <class Index>
-inline double sparse_row_dot(const double* value, const Index* column, std::int64_t begin,
+template <class Value, class Index>
+inline double sparse_row_dot(const Value* value, const Index* column, std::int64_t begin,
                              std::int64_t end, const double* x) {
   return sparse_row_sum(value, column, begin, end, [x](Index j) { return x[j]; });
 }

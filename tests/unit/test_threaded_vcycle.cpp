@@ -1,6 +1,8 @@
 // The threaded V-cycle (engine/solvers/threaded_vcycle.hpp) on BoomerAMG's hierarchy: with one
-// Gauss-Seidel block it is hypre's own cycle; with several it stays a symmetric operator (as
-// CG needs), gives the same result on any number of threads, and preconditions as well.
+// Gauss-Seidel block (in double precision) it is hypre's own cycle; with several it stays a
+// symmetric operator (as CG needs), gives the same result on any number of threads, and
+// preconditions as well; with its matrices in single precision (the default) it is the double
+// cycle to float rounding, still symmetric, and CG takes as many iterations.
 #include <gtest/gtest.h>
 #include <omp.h>
 
@@ -81,6 +83,7 @@ TEST(ThreadedVCycle, OneBlockIsHypresCycle) {
   hypre.threaded_cycle = false;
   AmgOptions one_block;
   one_block.cycle_block_rows = A.rows;
+  one_block.single_precision_cycle = false;
   const double difference = relative_difference(cycle(A, one_block, r), cycle(A, hypre, r));
   std::printf("one block against hypre's V-cycle: relative difference %.2e\n", difference);
   EXPECT_LT(difference, 1e-10);  // the same sweeps; only the rounding of the coarsest solve
@@ -147,6 +150,54 @@ TEST(ThreadedVCycle, BlocksPreconditionAsWellAsHypresCycle) {
   std::printf("CG iterations to 1e-8: hypre's cycle %d, eight blocks %d\n", with_hypre,
               with_blocks);
   EXPECT_LE(with_blocks, with_hypre + 2);
+}
+
+TEST(ThreadedVCycle, SinglePrecisionIsTheDoubleCycleToFloatRounding) {
+  const CsrMatrix A = variable_laplacian(24);
+  AmgOptions single, exact;
+  single.cycle_block_rows = exact.cycle_block_rows = A.rows / 6;
+  exact.single_precision_cycle = false;
+  ASSERT_TRUE(single.single_precision_cycle);  // the default
+  const auto u = wavy(A.rows, 0.7), v = wavy(A.rows, 1.3);
+  const auto Mu = cycle(A, single, u), Mv = cycle(A, single, v);
+  // The matrices' values rounded to 24 bits (relative 6e-8 each): the cycle's result moves by
+  // about that times the cycle's amplification, far below what a preconditioner notices.
+  const double difference = relative_difference(Mu, cycle(A, exact, u));
+  std::printf("single against double precision cycle: relative difference %.2e\n", difference);
+  EXPECT_GT(difference, 0.0);  // the values really are rounded
+  EXPECT_LT(difference, 1e-5);
+  // Both sweeps read the same rounded matrix and R = P^T holds for the rounded P: symmetric to
+  // the double sums' rounding.
+  const double uMv = std::inner_product(u.begin(), u.end(), Mv.begin(), 0.0);
+  const double vMu = std::inner_product(v.begin(), v.end(), Mu.begin(), 0.0);
+  std::printf("single precision: u.M^-1 v = %.12e, v.M^-1 u = %.12e\n", uMv, vMu);
+  EXPECT_NEAR(uMv, vMu, 1e-10 * std::abs(uMv));
+}
+
+TEST(ThreadedVCycle, SinglePrecisionPreconditionsAsWellAsDouble) {
+  const CsrMatrix A = variable_laplacian(30);
+  const auto b = wavy(A.rows, 0.7);
+  auto solve = [&](bool single_precision, std::vector<double>& x) {
+    AmgOptions options;
+    options.cycle_block_rows = A.rows / 8;
+    options.single_precision_cycle = single_precision;
+    auto solver = make_amg_pcg_solver(1e-10, 500, options);
+    x.assign(A.rows, 0.0);
+    const auto report = solver->solve(A, b, x);
+    EXPECT_TRUE(report.converged);
+    // CG itself is in double: the tolerance is met on the true matrix, not the rounded one.
+    EXPECT_LT(relative_residual(A, b, x), 1e-10);
+    return report.iterations;
+  };
+  std::vector<double> x_single, x_double;
+  const int with_single = solve(true, x_single), with_double = solve(false, x_double);
+  const double difference = relative_difference(x_single, x_double);
+  std::printf(
+      "CG iterations to 1e-10: single precision cycle %d, double %d; solutions differ by "
+      "%.2e\n",
+      with_single, with_double, difference);
+  EXPECT_LE(with_single, with_double + 1);
+  EXPECT_LT(difference, 1e-8);
 }
 
 }  // namespace
