@@ -13,10 +13,6 @@ namespace {
 // few rows; one this large means the coarsening stalled).
 constexpr std::size_t kMaxDenseRows = 8000;
 
-}  // namespace
-
-namespace {
-
 // A float copy of a borrowed matrix's values, and the view that reads it.
 CsrOf<float> rounded(const CsrView& M, std::vector<float>& storage) {
   const auto nnz = static_cast<std::size_t>(M.row_start[M.rows]);
