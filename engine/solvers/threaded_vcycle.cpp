@@ -30,6 +30,7 @@ void ThreadedVCycle::build(const std::vector<CsrView>& levels,
   if (levels.size() != interpolation.size() + 1 || interpolation.empty())
     throw std::invalid_argument(
         "V-cycle: at least two levels, one interpolation per level below the finest");
+  release();  // the previous hierarchy's views and copies
   precision_ = precision;
   exact_.levels = levels;
   exact_.levels[0] = {};  // set_fine()'s
@@ -37,10 +38,10 @@ void ThreadedVCycle::build(const std::vector<CsrView>& levels,
   block_rows_ = block_rows > 0 ? block_rows : kDefaultBlockRows;
   const std::size_t count = levels.size();
   const std::size_t below = interpolation.size();
-  restriction_start_.assign(below, {});
-  restriction_column_.assign(below, {});
-  restriction_value_.assign(below, {});
-  exact_.restriction.assign(below, {});
+  restriction_start_.resize(below);
+  restriction_column_.resize(below);
+  restriction_value_.resize(below);
+  exact_.restriction.resize(below);
   for (std::size_t l = 0; l < below; ++l) {
     // P_l^T by a counting pass over P_l's columns (the coarse rows).
     const CsrView& P = interpolation[l];
@@ -62,11 +63,6 @@ void ThreadedVCycle::build(const std::vector<CsrView>& levels,
       }
     exact_.restriction[l] = {P.columns, P.rows, start.data(), column.data(), value.data()};
   }
-  single_ = {};
-  single_levels_.clear();
-  single_interpolation_.clear();
-  single_restriction_.clear();
-  single_fine_.clear();
   if (precision_ == CyclePrecision::single_precision) {
     single_levels_.resize(count);
     single_interpolation_.resize(below);
@@ -79,10 +75,10 @@ void ThreadedVCycle::build(const std::vector<CsrView>& levels,
       single_.restriction.push_back(rounded(exact_.restriction[l], single_restriction_[l]));
     }
   }
-  residual_.assign(count, {});
-  coarse_b_.assign(count, {});
-  coarse_x_.assign(count, {});
-  before_.assign(count, {});
+  residual_.resize(count);
+  coarse_b_.resize(count);
+  coarse_x_.resize(count);
+  before_.resize(count);
   // Level 0's right-hand side and solution are apply()'s; the coarsest level needs neither a
   // residual nor a sweep's copy.
   for (std::size_t l = 0; l < count; ++l) {
