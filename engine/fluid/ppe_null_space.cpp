@@ -38,9 +38,52 @@ struct UnionFind {
 
 }  // namespace
 
+// "Reached" is carried from the anchored rows along the pattern by sweeps in row order, forward
+// and back (rows are sorted by cell, the longest axis slowest, so a sweep follows the flow).
+// Each thread sweeps its own rows first, reading only their flags; the rows left are swept on one
+// thread, reading all. False means "not shown", not "free": the union-find decides then.
+bool every_row_reaches_an_anchor(const std::vector<std::uint8_t>& anchored_row,
+                                 const CsrMatrix& A) {
+  const std::size_t rows = A.rows;
+  std::vector<std::uint8_t> reached(anchored_row.begin(), anchored_row.begin() + rows);
+  const auto reach = [&](std::size_t r, std::size_t begin, std::size_t end) {
+    if (reached[r]) return;
+    for (std::int64_t k = A.row_start[r] + 1; k < A.row_start[r + 1]; ++k) {
+      const auto c = static_cast<std::size_t>(A.column[k]);
+      if (c >= begin && c < end && reached[c]) {
+        reached[r] = 1;
+        return;
+      }
+    }
+  };
+  std::size_t left = 0;
+#pragma omp parallel reduction(+ : left)
+  {
+    const std::size_t threads = static_cast<std::size_t>(omp_get_num_threads());
+    const std::size_t t = static_cast<std::size_t>(omp_get_thread_num());
+    const std::size_t begin = rows * t / threads, end = rows * (t + 1) / threads;
+    for (std::size_t r = begin; r < end; ++r) reach(r, begin, end);
+    for (std::size_t r = end; r-- > begin;) reach(r, begin, end);
+    for (std::size_t r = begin; r < end; ++r) left += !reached[r];
+  }
+  for (int sweep = 0; sweep < 2 && left > 0; ++sweep) {
+    left = 0;
+    for (std::size_t r = 0; r < rows; ++r) reach(r, 0, rows);
+    for (std::size_t r = rows; r-- > 0;) {
+      reach(r, 0, rows);
+      left += !reached[r];
+    }
+  }
+  return left == 0;
+}
+
 std::size_t fix_free_pressure_levels(const std::vector<std::uint8_t>& anchored_row, CsrMatrix& A,
                                      std::vector<double>& rhs) {
   const std::size_t rows = A.rows;
+  // Most steps have a free surface in every region: then nothing is left to fix, and the sweeps
+  // show it at a fraction of the union-find's cost (which was 2.5 % of the same-case 3D dam break
+  // at a/20).
+  if (every_row_reaches_an_anchor(anchored_row, A)) return 0;
   UnionFind components(rows);
   // The pattern is symmetric (neighbourhood is): the entries above the diagonal hold every edge.
   // Each thread unites the edges within its own rows, whose parents stay among them (a parent is

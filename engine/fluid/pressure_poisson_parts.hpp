@@ -57,4 +57,9 @@ void subtract_ppe_source(const SphContext& ctx, const NeighborList& list, const 
 std::size_t fix_free_pressure_levels(const std::vector<std::uint8_t>& anchored, CsrMatrix& A,
                                      std::vector<double>& rhs);
 
+// Whether sweeps in row order carry a flag from the anchored rows to every row along the
+// pattern (fix_free_pressure_levels' shortcut): true only when no region is free; false may also
+// mean that the sweeps did not get there (a path that winds back and forth through the numbering).
+bool every_row_reaches_an_anchor(const std::vector<std::uint8_t>& anchored, const CsrMatrix& A);
+
 }  // namespace washout

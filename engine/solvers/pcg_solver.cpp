@@ -70,11 +70,19 @@ class JacobiPreconditioner final : public Preconditioner {
     if (same_matrix && inverse_diagonal_.size() == A.rows) return;
     const std::size_t n = A.rows;
     inverse_diagonal_.assign(n, 1.0);
+    // The assembly stores each row's diagonal first (ppe_matrix.cpp): found there, the row is not
+    // scanned (a scan of every entry was 2 % of the same-case 3D dam break at a/20).
 #pragma omp parallel for schedule(static) if (n > kParallelRows)
-    for (std::size_t i = 0; i < n; ++i)
-      for (std::int64_t k = A.row_start[i]; k < A.row_start[i + 1]; ++k)
+    for (std::size_t i = 0; i < n; ++i) {
+      const std::int64_t first = A.row_start[i], end = A.row_start[i + 1];
+      if (first < end && static_cast<std::size_t>(A.column[first]) == i) {
+        if (A.value[first] != 0.0) inverse_diagonal_[i] = 1.0 / A.value[first];
+        continue;
+      }
+      for (std::int64_t k = first; k < end; ++k)
         if (static_cast<std::size_t>(A.column[k]) == i && A.value[k] != 0.0)
           inverse_diagonal_[i] = 1.0 / A.value[k];
+    }
     auto& counters = solver_counters();
     counters.setup_bytes = std::max(counters.setup_bytes, double(n * sizeof(double)));
   }

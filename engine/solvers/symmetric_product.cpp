@@ -33,30 +33,27 @@ bool SymmetricProduct::build(const CsrMatrix& A) {
 
   diagonal_.assign(n, 0.0);
   start_.assign(n + 1, 0);
-#pragma omp parallel for schedule(static) if (parallel)
-  for (std::size_t i = 0; i < n; ++i) {
-    std::int64_t upper = 0;
-    for (std::int64_t k = A.row_start[i]; k < A.row_start[i + 1]; ++k) {
-      const auto j = static_cast<std::size_t>(A.column[k]);
-      if (j == i) diagonal_[i] += A.value[k];
-      upper += j > i;
-    }
-    start_[i + 1] = upper;
-  }
-  for (std::size_t i = 0; i < n; ++i) start_[i + 1] += start_[i];
-
-  // Each block's reach: the furthest column its rows scatter to. Its buffer spans its own rows
-  // and those up to its reach.
+  // One walk over the entries gives each row's upper count and each block's reach (the furthest
+  // column its rows scatter to; its buffer spans its own rows and those up to its reach). Blocks
+  // in the outer loop, so that a block's reach is one thread's.
   buffer_start_.assign(blocks + 1, 0);
 #pragma omp parallel for schedule(static) if (parallel)
   for (std::size_t b = 0; b < blocks; ++b) {
     const std::size_t end = std::min(n, (b + 1) * block_rows);
     std::size_t reach = end;
-    for (std::size_t i = b * block_rows; i < end; ++i)
-      for (std::int64_t k = A.row_start[i]; k < A.row_start[i + 1]; ++k)
-        reach = std::max(reach, static_cast<std::size_t>(A.column[k]) + 1);
+    for (std::size_t i = b * block_rows; i < end; ++i) {
+      std::int64_t upper = 0;
+      for (std::int64_t k = A.row_start[i]; k < A.row_start[i + 1]; ++k) {
+        const auto j = static_cast<std::size_t>(A.column[k]);
+        if (j == i) diagonal_[i] += A.value[k];
+        upper += j > i;
+        reach = std::max(reach, j + 1);
+      }
+      start_[i + 1] = upper;
+    }
     buffer_start_[b + 1] = static_cast<std::int64_t>(reach - b * block_rows);
   }
+  for (std::size_t i = 0; i < n; ++i) start_[i + 1] += start_[i];
   for (std::size_t b = 0; b < blocks; ++b) buffer_start_[b + 1] += buffer_start_[b];
   const auto upper = static_cast<std::size_t>(start_[n]);
   // An entry beyond the blocks costs 16 bytes a product (cleared, read back), an upper entry

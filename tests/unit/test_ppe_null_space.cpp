@@ -95,6 +95,45 @@ TEST(PpeNullSpace, ClosedRegionsAreFoundAlikeOnAnyNumberOfThreads) {
   }
 }
 
+// The shortcut that skips the union-find where every row reaches an anchor: shown by the sweeps
+// on a chain numbered in order (one anchor in the middle), on any number of threads; never
+// claimed where a region is free; and where the chain winds back and forth through the
+// numbering (0, 999, 1, 998, ...) so that sweeps do not get there, the union-find still finds
+// nothing to fix.
+TEST(PpeNullSpace, TheSweepsShortcutOnlyWhereEveryRowReachesAnAnchor) {
+  const std::size_t rows = 1000;
+  std::vector<std::pair<int, int>> in_order, winding;
+  for (int r = 0; r + 1 < int(rows); ++r) in_order.emplace_back(r, r + 1);
+  std::vector<int> path;
+  for (int k = 0; k < int(rows) / 2; ++k) {
+    path.push_back(k);
+    path.push_back(int(rows) - 1 - k);
+  }
+  for (std::size_t k = 0; k + 1 < path.size(); ++k) winding.emplace_back(path[k], path[k + 1]);
+  std::vector<std::uint8_t> anchored(rows, 0);
+  anchored[777] = 1;
+  const CsrMatrix chain = from_edges(rows, in_order), wound = from_edges(rows, winding);
+  std::vector<double> rhs(rows);
+  for (std::size_t r = 0; r < rows; ++r) rhs[r] = std::cos(0.21 * double(r));
+  for (int threads : {1, 2, 3}) {
+    const int before = omp_get_max_threads();
+    omp_set_num_threads(threads);
+    EXPECT_TRUE(every_row_reaches_an_anchor(anchored, chain)) << threads << " threads";
+    EXPECT_FALSE(every_row_reaches_an_anchor(std::vector<std::uint8_t>(rows, 0), chain))
+        << threads << " threads";
+    // Anchored at one end of the winding chain: the far end is 999 rows away along it.
+    std::vector<std::uint8_t> at_start(rows, 0);
+    at_start[0] = 1;
+    const bool shown = every_row_reaches_an_anchor(at_start, wound);
+    omp_set_num_threads(before);
+    const Fixed f = fix_on_threads(threads, wound, at_start, rhs);
+    EXPECT_EQ(f.regions, 0u) << threads << " threads";
+    EXPECT_EQ(f.rhs, rhs) << threads << " threads";
+    std::printf("%d threads: the winding chain %s by the sweeps\n", threads,
+                shown ? "shown anchored" : "left to the union-find");
+  }
+}
+
 // Fluid particles 0-3, wall particles 4-9: the fluid sees walls 5, 7 and 9 (two of them from
 // more than one fluid particle), and 4, 6, 8 are dry.
 TEST(ActiveBoundary, MarksEveryWallParticleSomeFluidSeesOnAnyNumberOfThreads) {
