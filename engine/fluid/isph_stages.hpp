@@ -24,9 +24,11 @@ std::size_t detect_free_surface(const SphContext& ctx, const NeighborList& list,
 void compute_eddy_viscosity(const SphContext& ctx, const NeighborList& list, const Particles& p,
                             double smagorinsky_constant, FluidWork& work);
 
-// Step 1, predictor: u* = u + dt (nu <lap u> + (1/rho0) <div tau> + g) (predictor.cpp).
+// Step 1, predictor: u* = u + dt (nu <lap u> + (1/rho0) <div tau> + g) (predictor.cpp). With
+// eddy_viscosity_at_walls false a wall pair takes the molecular viscosity only.
 void predict_velocity(const SphContext& ctx, const NeighborList& list, const Particles& p,
-                      double viscosity, const Vec3& gravity, double dt, FluidWork& work);
+                      double viscosity, const Vec3& gravity, double dt, FluidWork& work,
+                      bool eddy_viscosity_at_walls = true);
 
 // Wall function: the first fluid layer loses the part of the smooth-wall law-of-the-wall stress
 // that the resolved viscous term does not carry, scaled by (1 - slip) (wall_shear.cpp).

@@ -99,6 +99,12 @@ const std::vector<ParameterInfo>& ParameterSet::engine_table() {
        d.turbulence},
       {"smagorinsky_constant", "-", "C_s of the Smagorinsky model (nu_t = (C_s d0)^2 |S|)",
        d.smagorinsky_constant},
+      {"turbulence_at_walls", "-",
+       "the eddy viscosity across a fluid-wall pair: \"markers\" (it acts on the markers' "
+       "mirrored velocity, a wall stress of its own beside the law of the wall, several times "
+       "larger at a no-slip wall) or \"wall_function\" (the pair takes the molecular viscosity "
+       "only: the wall's turbulent stress is wall_friction's alone; docs/method.md)",
+       d.turbulence_at_walls},
       {"solver", "-",
        "pressure solver: \"cholmod\" (direct), \"pcg\" (Jacobi-preconditioned CG, warm-started), "
        "\"pcg_agg\" (CG preconditioned by Jacobi plus a coarse correction on aggregates of "
@@ -414,6 +420,7 @@ SimulationParameters SimulationParameters::from(const ParameterSet& set) {
   p.wall_layers = integer("wall_layers", non_negative("wall_layers"));
   p.turbulence = one_of("turbulence", {"none", "smagorinsky"});
   p.smagorinsky_constant = non_negative("smagorinsky_constant");
+  p.turbulence_at_walls = one_of("turbulence_at_walls", {"markers", "wall_function"});
   p.solver = one_of("solver", {"auto", "cholmod", "pcg", "pcg_agg", "pcg_amg"});
   p.solver_tolerance = positive("solver_tolerance");
   p.coupling_tolerance = positive("coupling_tolerance");

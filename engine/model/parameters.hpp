@@ -91,6 +91,10 @@ struct SimulationParameters {
   int wall_layers = 0;  // 0: enough to fill the kernel support
   std::string turbulence = "smagorinsky";
   double smagorinsky_constant = 0.12;
+  // Whether the eddy viscosity also acts across wall pairs, on the markers' mirrored velocity
+  // ("markers"), or the wall's turbulent stress is the law of the wall's alone ("wall_function";
+  // docs/method.md, the thirty-third session).
+  std::string turbulence_at_walls = "markers";
   std::string solver = "auto";
   // The loosest tolerance that moves no validated figure (docs/performance.md).
   double solver_tolerance = 1e-6;

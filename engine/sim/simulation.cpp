@@ -283,7 +283,8 @@ void Simulation::run_stage(Stage stage, StepInProgress& now) {
       compute_eddy_viscosity(ctx_, neighbors_, particles_, prm.smagorinsky_constant, work_);
       return;
     case Stage::predictor:
-      predict_velocity(ctx_, neighbors_, particles_, prm.viscosity, prm.gravity, dt, work_);
+      predict_velocity(ctx_, neighbors_, particles_, prm.viscosity, prm.gravity, dt, work_,
+                       prm.turbulence_at_walls == "markers");
       return;
     case Stage::wall_shear:
       apply_wall_shear(ctx_, neighbors_, particles_, walls_, prm.viscosity, dt, work_);
