@@ -28,13 +28,12 @@ void predict_velocity(const SphContext& ctx, const NeighborList& list, const Par
       double u_i[3] = {0, 0, 0};
       for (int a = 0; a < dim; ++a) u_i[a] = p.velocity[a][i];
       const double nu_t_i = turbulent ? work.eddy_viscosity[i] : 0.0;
+      const double nu_t_wall = eddy_viscosity_at_walls ? nu_t_i : 0.0;  // a wall pair's
       for_each_neighbor(ctx, list, p, i, [&](const NeighborPair& q) {
         const bool fluid = q.j < n;
         double weight = ctx.laplacian_weight(q.r, q.r2);
         if (turbulent)
-          weight *= viscosity + (fluid ? 0.5 * (nu_t_i + work.eddy_viscosity[q.j])
-                                 : eddy_viscosity_at_walls ? nu_t_i
-                                                           : 0.0);
+          weight *= viscosity + (fluid ? 0.5 * (nu_t_i + work.eddy_viscosity[q.j]) : nu_t_wall);
         else
           weight *= viscosity;
         for (int a = 0; a < dim; ++a) {
