@@ -67,6 +67,14 @@ const std::vector<ParameterInfo>& ParameterSet::engine_table() {
        "error there is its velocity divergence accumulated over the steps it has spent there) or "
        "\"off\" (no term in those rows, as before the sixteenth session; docs/method.md)",
        d.alpha_near_surface},
+      {"alpha_scaling", "-",
+       "how alpha follows the step: \"per_time\" (alpha is the fraction of the density error "
+       "relaxed in a step as long as the default limits give, cfl 0.2, viscous_number 0.125 and "
+       "dt_max 1 ms; a shorter step, set by a smaller cfl, dt_max or dt, relaxes at the same rate "
+       "in time, alpha dt / dt_default, so that it does not turn the summation density's noise "
+       "into velocity faster) or \"per_step\" (alpha per step at any step, as in the paper; "
+       "docs/method.md)",
+       d.alpha_scaling},
       {"free_surface_threshold", "-",
        "a particle whose density is below this fraction of the full-support density is on the "
        "free surface and takes P = 0",
@@ -407,6 +415,7 @@ SimulationParameters SimulationParameters::from(const ParameterSet& set) {
   p.alpha = non_negative("alpha");
   if (p.alpha > 1) throw ParameterError("alpha", "parameter 'alpha' must lie in [0, 1]");
   p.alpha_near_surface = one_of("alpha_near_surface", {"strain", "off"});
+  p.alpha_scaling = one_of("alpha_scaling", {"per_time", "per_step"});
   p.free_surface_threshold = in_unit_interval("free_surface_threshold");
   p.surface_pressure = one_of("surface_pressure", {"ghost", "on_particles"});
   p.dt = non_negative("dt");

@@ -76,6 +76,10 @@ struct SimulationParameters {
   // particle's accumulated velocity divergence; "off" leaves those rows without the term
   // (docs/method.md, sixteenth session).
   std::string alpha_near_surface = "strain";
+  // "per_time": alpha is the fraction of the density error relaxed in a step of the default
+  // limits' length, and a shorter step relaxes at the same rate in time (alpha dt / dt_default);
+  // "per_step": alpha per step at any step (docs/method.md, thirty-fourth session).
+  std::string alpha_scaling = "per_time";
   double free_surface_threshold = 0.9;
   std::string surface_pressure = "ghost";
   double dt = 0.0;  // 0: adaptive

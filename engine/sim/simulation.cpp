@@ -12,6 +12,7 @@
 #include "engine/boundary/virtual_markers.hpp"
 #include "engine/boundary/wall_acceleration.hpp"
 #include "engine/core/fluid_interpolation.hpp"
+#include "engine/fluid/density_relaxation.hpp"
 #include "engine/fluid/isph_stages.hpp"
 #include "engine/sim/particle_builder.hpp"
 #include "engine/sim/rigid_body_system.hpp"
@@ -166,7 +167,7 @@ Simulation::Simulation(Model model)
 
 Simulation::~Simulation() = default;
 
-TimeStepChoice Simulation::choose_time_step(double until) const {
+TimeStepInputs Simulation::time_step_inputs(double until) const {
   const auto& prm = model_.params;
   TimeStepInputs in;
   in.fixed_dt = prm.dt;
@@ -178,7 +179,26 @@ TimeStepChoice Simulation::choose_time_step(double until) const {
     in.max_viscosity = std::max(in.max_viscosity, prm.viscosity + nu_t);
   in.gravity = prm.gravity.norm();
   in.time = time_, in.until = until;
-  return washout::choose_time_step(in);
+  return in;
+}
+
+TimeStepChoice Simulation::choose_time_step(double until) const {
+  return washout::choose_time_step(time_step_inputs(until));
+}
+
+// alpha for a step of the chosen length (density_relaxation.hpp): with "per_time", the step the
+// default limits would take in this state is the reference. At the default limits the two steps
+// are the same numbers and alpha is used as given.
+double Simulation::step_alpha(const TimeStepChoice& choice) const {
+  const auto& prm = model_.params;
+  if (prm.alpha_scaling == "per_step") return prm.alpha;
+  const SimulationParameters defaults;
+  TimeStepInputs reference = time_step_inputs(std::numeric_limits<double>::infinity());
+  reference.fixed_dt = 0.0;
+  reference.cfl = defaults.cfl, reference.viscous_number = defaults.viscous_number;
+  reference.dt_max = defaults.dt_max;
+  return density_relaxation_per_time(prm.alpha, choice.unlanded_dt,
+                                     washout::choose_time_step(reference).dt);
 }
 
 // The Courant number dt U / h of a step at the flow's speed scale: the fastest fluid particle,
@@ -229,6 +249,7 @@ StepReport Simulation::step_until(double until) {
   StepInProgress now;
   const TimeStepChoice choice = choose_time_step(until);
   now.dt = choice.dt;
+  now.alpha = step_alpha(choice);
   now.report.dt_limit = choice.limit;
   if (prm.dt == 0 && now.dt < prm.dt_min) {
     std::ostringstream m;
@@ -305,7 +326,7 @@ void Simulation::run_stage(Stage stage, StepInProgress& now) {
                                 work_.boundary);
       return;
     case Stage::ppe_assembly:
-      now.ppe = assemble_pressure_poisson(ctx_, neighbors_, particles_, prm.gravity, prm.alpha, dt,
+      now.ppe = assemble_pressure_poisson(ctx_, neighbors_, particles_, prm.gravity, now.alpha, dt,
                                           ghost_surface_, work_, walls_, gradient_forms_.symmetric,
                                           stable_ppe_rows_);
       return;

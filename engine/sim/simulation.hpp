@@ -157,7 +157,10 @@ class Simulation {
   void update_boundary_pressures();
 
  private:
+  TimeStepInputs time_step_inputs(double until) const;
   TimeStepChoice choose_time_step(double until) const;
+  // The density-invariance term's alpha for a step (alpha_scaling, density_relaxation.hpp).
+  double step_alpha(const TimeStepChoice& choice) const;
   // The Courant number dt U / h of a step at the flow's speed scale (surface smoothing's rate).
   double step_courant(double dt) const;
   // Kinetic plus potential energy of the fluid and the dynamic bodies.
@@ -173,6 +176,7 @@ class Simulation {
   // One step's values shared by its stages.
   struct StepInProgress {
     double dt = 0.0, t_new = 0.0;
+    double alpha = 0.0;  // the density-invariance term's relaxation this step
     StepReport report;
     PpeStatistics ppe;
   };

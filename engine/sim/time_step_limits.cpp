@@ -24,7 +24,7 @@ const char* step_limit_name(StepLimit limit) {
 }
 
 TimeStepChoice choose_time_step(const TimeStepInputs& in) {
-  if (in.fixed_dt > 0) return {in.fixed_dt, StepLimit::fixed};
+  if (in.fixed_dt > 0) return {in.fixed_dt, StepLimit::fixed, in.fixed_dt};
   TimeStepChoice c{in.dt_max, StepLimit::dt_max};
   const auto limit = [&](double dt, StepLimit why) {
     if (dt < c.dt) c = {dt, why};
@@ -33,11 +33,12 @@ TimeStepChoice choose_time_step(const TimeStepInputs& in) {
   if (in.max_viscosity > 0)
     limit(in.viscous_number * in.h * in.h / in.max_viscosity, StepLimit::viscous);
   if (in.gravity > 0) limit(0.25 * std::sqrt(in.h / in.gravity), StepLimit::gravity);
+  c.unlanded_dt = c.dt;
   // Land on the next frame time with at most two equal steps (no sliver steps).
   const double remaining = in.until - in.time;
   if (remaining > 0) {
     const double steps = std::ceil(remaining / c.dt - 1e-9);
-    if (steps <= 2) c = {remaining / steps, StepLimit::frame};
+    if (steps <= 2) c.dt = remaining / steps, c.limit = StepLimit::frame;
   }
   return c;
 }

@@ -29,6 +29,8 @@ struct TimeStepInputs {
 struct TimeStepChoice {
   double dt = 0.0;
   StepLimit limit = StepLimit::dt_max;
+  // The step before it was shortened to land on a frame (the scene's dt when fixed).
+  double unlanded_dt = 0.0;
 };
 
 TimeStepChoice choose_time_step(const TimeStepInputs& in);

@@ -3,7 +3,9 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <cstdio>
 
+#include "engine/fluid/density_relaxation.hpp"
 #include "engine/sim/energy_budget.hpp"
 #include "engine/sim/time_step_limits.hpp"
 
@@ -32,8 +34,10 @@ TEST(TimeStepLimits, TheSmallestLimitSetsTheStepAndIsNamed) {
   c = choose_time_step(in);
   EXPECT_EQ(c.limit, StepLimit::frame);
   EXPECT_DOUBLE_EQ(c.dt, 0.75e-3);
+  EXPECT_DOUBLE_EQ(c.unlanded_dt, 1e-3);  // the step the limits gave before the landing
   in.fixed_dt = 2e-4;
   EXPECT_EQ(choose_time_step(in).limit, StepLimit::fixed);
+  EXPECT_DOUBLE_EQ(choose_time_step(in).unlanded_dt, 2e-4);
   EXPECT_STREQ(step_limit_name(StepLimit::advective), "cfl");
 }
 
@@ -48,6 +52,29 @@ Particles column(int n, double d0) {
 
 // Free fall conserves kinetic plus potential energy: moving every particle along its exact
 // ballistic path leaves E unchanged (to round-off), and E has the right value at the start.
+// alpha per unit time: a step shorter than the reference relaxes the same fraction of the
+// density error per second (alpha_step / dt = alpha / dt_reference), so n steps of dt_reference / n
+// remove what one reference step removes to first order; at the reference step and above, alpha
+// is used as given, to the bit.
+TEST(DensityRelaxation, ShorterStepsRelaxAtTheReferenceRateInTime) {
+  const double alpha = 0.05, reference = 7e-4;
+  EXPECT_EQ(density_relaxation_per_time(alpha, reference, reference), alpha);
+  EXPECT_EQ(density_relaxation_per_time(alpha, 3 * reference, reference), alpha);
+  EXPECT_EQ(density_relaxation_per_time(alpha, 1e-4, 0.0), alpha);  // no reference: as given
+  for (const int n : {2, 10, 100}) {
+    const double dt = reference / n, a = density_relaxation_per_time(alpha, dt, reference);
+    EXPECT_NEAR(a / dt, alpha / reference, 1e-12 * alpha / reference);
+    // The error left after one reference step's time, (1 - a)^n, against 1 - alpha: the rate in
+    // time is the same, the per-step compounding differs at second order (alpha^2 / 2).
+    const double left = std::pow(1.0 - a, n);
+    std::printf("n = %3d steps: error left %.6f (one reference step: %.6f)\n", n, left,
+                1.0 - alpha);
+    EXPECT_NEAR(left, 1.0 - alpha, 0.5 * alpha * alpha);
+  }
+  // Per step, the same alpha at a tenth of the step removes (1 - 0.95^10) = 40 % in that time.
+  EXPECT_GT(1.0 - std::pow(1.0 - alpha, 10), 7.5 * alpha);
+}
+
 TEST(EnergyBudget, FreeFallConservesMechanicalEnergy) {
   const double m = 0.1, g = 9.81;
   Particles p = column(20, 0.01);
