@@ -62,8 +62,8 @@ void expect_fired(const Fired& f, const std::string& fragment) {
 // particle reaches the speed limit. (With the default "per_time" the same run completes: alpha
 // is then 1/20 at that step; docs/method.md, the thirty-fourth session.)
 TEST(Guards, EnergyGainStopsTheRun) {
-  const Fired f = run_dam_break("energy", {"end_time=0.27", "dt_max=0.01", "cfl=0.01", "alpha=1",
-                                           "alpha_scaling=per_step"});
+  const Fired f = run_dam_break(
+      "energy", {"end_time=0.27", "dt_max=0.01", "cfl=0.01", "alpha=1", "alpha_scaling=per_step"});
   expect_fired(f, "energy gain: the mechanical energy of the fluid and bodies is");
   const auto energy = io::RunFileReader(f.file.string()).read_doubles("/stats/mechanical_energy");
   // Before the blow-up the dam break only loses energy: its largest value is the start's, to
