@@ -50,8 +50,6 @@ Particles column(int n, double d0) {
   return p;
 }
 
-// Free fall conserves kinetic plus potential energy: moving every particle along its exact
-// ballistic path leaves E unchanged (to round-off), and E has the right value at the start.
 // alpha per unit time: a step shorter than the reference relaxes the same fraction of the
 // density error per second (alpha_step / dt = alpha / dt_reference), so n steps of dt_reference / n
 // remove what one reference step removes to first order; at the reference step and above, alpha
@@ -75,6 +73,8 @@ TEST(DensityRelaxation, ShorterStepsRelaxAtTheReferenceRateInTime) {
   EXPECT_GT(1.0 - std::pow(1.0 - alpha, 10), 7.5 * alpha);
 }
 
+// Free fall conserves kinetic plus potential energy: moving every particle along its exact
+// ballistic path leaves E unchanged (to round-off), and E has the right value at the start.
 TEST(EnergyBudget, FreeFallConservesMechanicalEnergy) {
   const double m = 0.1, g = 9.81;
   Particles p = column(20, 0.01);
