@@ -8,6 +8,7 @@ void StepSeries::record(const StepReport& report, const std::vector<double>& pro
   time_.push_back(report.time);
   step_.push_back(report.step);
   dt_.push_back(report.dt);
+  alpha_.push_back(report.alpha);
   ppe_iterations_.push_back(report.ppe_iterations);
   ppe_residual_.push_back(report.ppe_residual);
   wall_seconds_.push_back(report.wall_seconds);
@@ -27,6 +28,7 @@ void StepSeries::append_to(RunFileWriter& writer, const std::vector<ProbeSpec>& 
   writer.append("/stats/time", time_.data(), count);
   writer.append("/stats/step", step_.data(), count);
   writer.append("/stats/dt", dt_.data(), count);
+  writer.append("/stats/alpha", alpha_.data(), count);
   writer.append("/stats/ppe_iterations", ppe_iterations_.data(), count);
   writer.append("/stats/ppe_residual", ppe_residual_.data(), count);
   writer.append("/stats/wall_seconds", wall_seconds_.data(), count);
@@ -43,7 +45,7 @@ void StepSeries::append_to(RunFileWriter& writer, const std::vector<ProbeSpec>& 
     writer.append("/probes/" + probes[k].name + "/time", time_.data(), count);
     writer.append("/probes/" + probes[k].name + "/value", values.data(), count);
   }
-  for (auto* v : {&time_, &dt_, &ppe_residual_, &wall_seconds_, &kinetic_energy_,
+  for (auto* v : {&time_, &dt_, &alpha_, &ppe_residual_, &wall_seconds_, &kinetic_energy_,
                   &mechanical_energy_, &probe_rows_})
     v->clear();
   for (auto* v : {&step_, &ppe_iterations_, &substeps_, &free_surface_, &squeeze_film_, &retired_,

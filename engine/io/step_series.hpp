@@ -21,7 +21,8 @@ class StepSeries {
   void append_to(RunFileWriter& writer, const std::vector<ProbeSpec>& probes);
 
  private:
-  std::vector<double> time_, dt_, ppe_residual_, wall_seconds_, kinetic_energy_, mechanical_energy_;
+  std::vector<double> time_, dt_, alpha_, ppe_residual_, wall_seconds_, kinetic_energy_,
+      mechanical_energy_;
   std::vector<std::int64_t> step_, ppe_iterations_, substeps_, free_surface_, squeeze_film_,
       retired_, dt_limit_;
   std::vector<double> probe_rows_;  // row-major, one value per probe

@@ -250,6 +250,7 @@ StepReport Simulation::step_until(double until) {
   const TimeStepChoice choice = choose_time_step(until);
   now.dt = choice.dt;
   now.alpha = step_alpha(choice);
+  now.report.alpha = now.alpha;
   now.report.dt_limit = choice.limit;
   if (prm.dt == 0 && now.dt < prm.dt_min) {
     std::ostringstream m;

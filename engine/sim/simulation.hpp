@@ -46,6 +46,7 @@ struct StepReport {
   double mechanical_energy = 0.0;
   double energy_allowed = 0.0;
   StepLimit dt_limit = StepLimit::dt_max;  // which limit set dt (time_step_limits.hpp)
+  double alpha = 0.0;  // the density-invariance term's relaxation this step (alpha_scaling)
   std::size_t particles_in_walls = 0;
   std::size_t squeeze_film_particles = 0;  // fluid in gaps narrower than 2 d0 at a body
   std::size_t retired_particles = 0;       // fluid that left the domain so far (cumulative)

@@ -205,6 +205,9 @@ TEST(DamBreak, Front2dDefault) {
   // off the floor, gently: one touching it and being put back is allowed (none did at a/20 with
   // the seventh session's defaults); a row of them would mean a leaking wall.
   EXPECT_LE(r.wall_crossings, 2);
+  // At the default limits the density relaxation is alpha as given at every step, to the bit
+  // (alpha_scaling = "per_time" only scales steps shorter than the default's).
+  for (double a : run.read_doubles("/stats/alpha")) EXPECT_EQ(a, 0.05);
 }
 
 // With turbulence_at_walls = "wall_function" the wall's turbulent stress is the law of the
@@ -248,6 +251,17 @@ TEST(DamBreak, SmallStepsRelaxTheDensityAtTheDefaultRate) {
   EXPECT_LT(r.rms, 0.25);
   EXPECT_LT(std::abs(speed), 0.1);
   EXPECT_LE(r.wall_crossings, 2);
+  // The alpha each step used (/stats/alpha): never above the given 0.05, and where both the run's
+  // step and the default limits' are set by the Courant number, exactly 0.02 / 0.2 of it. The
+  // first steps, from rest, are longer than the default's 1 ms cap and keep 0.05.
+  io::RunFileReader run(r.h5);
+  auto alpha = run.read_doubles("/stats/alpha");
+  ASSERT_FALSE(alpha.empty());
+  for (double a : alpha) EXPECT_LE(a, 0.05);
+  std::sort(alpha.begin(), alpha.end());
+  const double median = alpha[alpha.size() / 2];
+  std::printf("alpha per step: %.4g to %.4g, median %.6g\n", alpha.front(), alpha.back(), median);
+  EXPECT_NEAR(median, 0.005, 1e-12);
 }
 
 TEST(DamBreak, Front3dCoarse) {
