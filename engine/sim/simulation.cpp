@@ -182,18 +182,15 @@ TimeStepInputs Simulation::time_step_inputs(double until) const {
   return in;
 }
 
-TimeStepChoice Simulation::choose_time_step(double until) const {
-  return washout::choose_time_step(time_step_inputs(until));
-}
-
 // alpha for a step of the chosen length (density_relaxation.hpp): with "per_time", the step the
-// default limits would take in this state is the reference. At the default limits the two steps
-// are the same numbers and alpha is used as given.
-double Simulation::step_alpha(const TimeStepChoice& choice) const {
+// default limits would take in the same state (the same inputs) is the reference. At the default
+// limits the two steps are the same numbers and alpha is used as given.
+double Simulation::step_alpha(const TimeStepInputs& inputs, const TimeStepChoice& choice) const {
   const auto& prm = model_.params;
   if (prm.alpha_scaling == "per_step") return prm.alpha;
   const SimulationParameters defaults;
-  TimeStepInputs reference = time_step_inputs(std::numeric_limits<double>::infinity());
+  TimeStepInputs reference = inputs;
+  reference.until = std::numeric_limits<double>::infinity();  // no landing on a frame
   reference.fixed_dt = 0.0;
   reference.cfl = defaults.cfl, reference.viscous_number = defaults.viscous_number;
   reference.dt_max = defaults.dt_max;
@@ -247,9 +244,10 @@ StepReport Simulation::step_until(double until) {
   const auto& prm = model_.params;
   const auto wall_start = std::chrono::steady_clock::now();
   StepInProgress now;
-  const TimeStepChoice choice = choose_time_step(until);
+  const TimeStepInputs inputs = time_step_inputs(until);
+  const TimeStepChoice choice = washout::choose_time_step(inputs);
   now.dt = choice.dt;
-  now.alpha = step_alpha(choice);
+  now.alpha = step_alpha(inputs, choice);
   now.report.alpha = now.alpha;
   now.report.dt_limit = choice.limit;
   if (prm.dt == 0 && now.dt < prm.dt_min) {

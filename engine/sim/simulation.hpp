@@ -158,10 +158,11 @@ class Simulation {
   void update_boundary_pressures();
 
  private:
+  // What the adaptive step is chosen from (time_step_limits.hpp), to land on `until`.
   TimeStepInputs time_step_inputs(double until) const;
-  TimeStepChoice choose_time_step(double until) const;
-  // The density-invariance term's alpha for a step (alpha_scaling, density_relaxation.hpp).
-  double step_alpha(const TimeStepChoice& choice) const;
+  // The density-invariance term's alpha for the step chosen from these inputs (alpha_scaling,
+  // density_relaxation.hpp).
+  double step_alpha(const TimeStepInputs& inputs, const TimeStepChoice& choice) const;
   // The Courant number dt U / h of a step at the flow's speed scale (surface smoothing's rate).
   double step_courant(double dt) const;
   // Kinetic plus potential energy of the fluid and the dynamic bodies.
