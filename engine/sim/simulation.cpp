@@ -247,8 +247,7 @@ StepReport Simulation::step_until(double until) {
   const TimeStepInputs inputs = time_step_inputs(until);
   const TimeStepChoice choice = washout::choose_time_step(inputs);
   now.dt = choice.dt;
-  now.alpha = step_alpha(inputs, choice);
-  now.report.alpha = now.alpha;
+  now.report.alpha = step_alpha(inputs, choice);
   now.report.dt_limit = choice.limit;
   if (prm.dt == 0 && now.dt < prm.dt_min) {
     std::ostringstream m;
@@ -325,9 +324,9 @@ void Simulation::run_stage(Stage stage, StepInProgress& now) {
                                 work_.boundary);
       return;
     case Stage::ppe_assembly:
-      now.ppe = assemble_pressure_poisson(ctx_, neighbors_, particles_, prm.gravity, now.alpha, dt,
-                                          ghost_surface_, work_, walls_, gradient_forms_.symmetric,
-                                          stable_ppe_rows_);
+      now.ppe = assemble_pressure_poisson(ctx_, neighbors_, particles_, prm.gravity,
+                                          now.report.alpha, dt, ghost_surface_, work_, walls_,
+                                          gradient_forms_.symmetric, stable_ppe_rows_);
       return;
     case Stage::ppe_solve:
       solve_pressure(now);

@@ -178,8 +178,7 @@ class Simulation {
   // One step's values shared by its stages.
   struct StepInProgress {
     double dt = 0.0, t_new = 0.0;
-    double alpha = 0.0;  // the density-invariance term's relaxation this step
-    StepReport report;
+    StepReport report;  // report.alpha: the density-invariance term's relaxation this step
     PpeStatistics ppe;
   };
   void run_stage(Stage stage, StepInProgress& now);
