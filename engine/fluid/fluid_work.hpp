@@ -25,6 +25,7 @@ struct FluidWork {
   // from: 1 measured (a full support), 2 and 3 the mean of the level before among the neighbours,
   // 0 none (s = 1) (gradient_scale.cpp); empty when the lattice normalisation alone is used.
   std::vector<double> gradient_scale;
+  std::vector<double> gradient_moment;  // m_i of every fluid particle, measured before the scale
   std::vector<std::uint8_t> gradient_scale_level;
   std::vector<double> gradient_scale_pending;  // scratch of the levels 2 and 3
   BoundaryWork boundary;              // markers, wall accelerations, squeeze films of this step

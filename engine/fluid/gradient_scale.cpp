@@ -29,23 +29,41 @@ constexpr double kLargestScale = 1.15;
 
 void compute_gradient_scale(const SphContext& ctx, const NeighborList& list, const Particles& p,
                             bool symmetric, FluidWork& work) {
+  compute_gradient_moment(ctx, list, p, symmetric, work);
+  scale_from_gradient_moment(list, p, work);
+}
+
+void compute_gradient_moment(const SphContext& ctx, const NeighborList& list, const Particles& p,
+                             bool symmetric, FluidWork& work) {
+  const std::size_t n = p.fluid_count;
+  const bool own_kernel = symmetric && ctx.symmetric_has_own_kernel();
+  work.gradient_moment.resize(n);
+#pragma omp parallel for schedule(static)
+  for (std::size_t i = 0; i < n; ++i) {
+    double moment = 0.0;
+    for_each_neighbor(ctx, list, p, i, [&](const NeighborPair& q) {
+      moment -= gradient_moment_weight(ctx, own_kernel, q.r) * q.r2;
+    });
+    work.gradient_moment[i] = moment / ctx.dim;
+  }
+}
+
+void scale_from_gradient_moment(const NeighborList& list, const Particles& p, FluidWork& work) {
   const std::size_t n = p.fluid_count;
   std::vector<double>& scale = work.gradient_scale;
   std::vector<std::uint8_t>& origin = work.gradient_scale_level;
   scale.assign(n, 1.0);
   origin.assign(n, 0);
-  const bool own_kernel = symmetric && ctx.symmetric_has_own_kernel();
 #pragma omp parallel for schedule(static)
   for (std::size_t i = 0; i < n; ++i) {
     if (work.free_surface[i]) continue;
-    // One pass: the moment, and whether a surface particle is in reach (then it is not used).
-    double moment = 0.0;
+    // Measured only where no surface particle is in reach (a cut support reads low).
     bool cut = false;
-    for_each_neighbor(ctx, list, p, i, [&](const NeighborPair& q) {
-      cut = cut || (q.j < n && work.free_surface[q.j] != 0);
-      moment -= (own_kernel ? ctx.symmetric_gradient_weight(q.r) : ctx.gradient_weight(q.r)) * q.r2;
-    });
-    moment /= ctx.dim;
+    for (std::uint64_t k = list.offset[i]; k < list.offset[i + 1] && !cut; ++k) {
+      const std::size_t j = list.index[k];
+      cut = j < n && work.free_surface[j] != 0;
+    }
+    const double moment = work.gradient_moment[i];
     if (cut || !(moment > 0.0)) continue;
     scale[i] = std::clamp(1.0 / moment, 1.0 / kLargestScale, kLargestScale);
     origin[i] = 1;

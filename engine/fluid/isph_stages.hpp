@@ -14,6 +14,11 @@ namespace washout {
 // <rho>_i = sum_j m_j W_ij over fluid and boundary neighbours, scaled so that a full-support
 // lattice gives rho0 (summation_density.cpp).
 void compute_summation_density(const SphContext& ctx, const NeighborList& list, Particles& p);
+// The same, and in the same walk each fluid particle's gradient moment m_i into
+// work.gradient_moment (gradient_scale.cpp), which reads only the pairs' distances too: one walk
+// over the neighbours' positions instead of two (docs/performance.md, thirty-fifth session).
+void compute_summation_density_and_gradient_moment(const SphContext& ctx, const NeighborList& list,
+                                                   Particles& p, bool symmetric, FluidWork& work);
 
 // Free surface: <rho>_i < threshold * rho0 (kSurface), or no fluid neighbour (kIsolated, P = 0).
 // Returns the count (free_surface.cpp).
@@ -70,6 +75,16 @@ void accumulate_surface_strain(const SphContext& ctx, const NeighborList& list, 
 // neighbours within a support of the free surface.
 void compute_gradient_scale(const SphContext& ctx, const NeighborList& list, const Particles& p,
                             bool symmetric, FluidWork& work);
+// Its two parts: the moments (a walk of their own; compute_summation_density_and_gradient_moment
+// takes them in the density's), then the scales from the moments and the free surface.
+void compute_gradient_moment(const SphContext& ctx, const NeighborList& list, const Particles& p,
+                             bool symmetric, FluidWork& work);
+void scale_from_gradient_moment(const NeighborList& list, const Particles& p, FluidWork& work);
+// The pair weight V (dK/dr) / r of the gradient moment (with the lattice normalisation), K the
+// kernel of the corrector's form: its own in the symmetric form of 3D. A pair adds -weight r^2.
+inline double gradient_moment_weight(const SphContext& ctx, bool own_kernel, double r) {
+  return own_kernel ? ctx.symmetric_gradient_weight(r) : ctx.gradient_weight(r);
+}
 // Copies the solution back to the fluid particles' pressure (P = 0 on the free surface).
 void scatter_pressure(const FluidWork& work, Particles& p);
 // Initial guess for an iterative solve: the previous pressure of each unknown.

@@ -69,58 +69,55 @@ void assemble_ppe_matrix(const SphContext& ctx, const NeighborList& list, const 
   grow_to(A.column, static_cast<std::size_t>(A.row_start[rows]));
   grow_to(A.value, static_cast<std::size_t>(A.row_start[rows]));
 
-  // The dimension fixed at compile time, so that the walk's three sums stay in registers.
-  with_dimension(ctx.dim, [&](auto dim) {
 #pragma omp parallel for schedule(static)
-    for (std::size_t i = 0; i < n; ++i) {
-      const std::int32_t row = work.unknown[i];
-      if (row < 0) {
-        if (identity_rows) {
-          A.column[A.row_start[i]] = static_cast<std::int32_t>(i);
-          A.value[A.row_start[i]] = 1.0;
-        }
-        continue;
+  for (std::size_t i = 0; i < n; ++i) {
+    const std::int32_t row = work.unknown[i];
+    if (row < 0) {
+      if (identity_rows) {
+        A.column[A.row_start[i]] = static_cast<std::int32_t>(i);
+        A.value[A.row_start[i]] = 1.0;
       }
-      std::int64_t slot = A.row_start[row] + 1;
-      double diagonal = 0.0;
-      double missing[3] = {0, 0, 0};    // m_i
-      double cut[3] = {0, 0, 0};        // S_i
-      double cut_force[3] = {0, 0, 0};  // S_i of the symmetric gradient's own kernel
-      // The rows the corrector takes in symmetric form: all but the surface's (corrector.cpp).
-      const bool own_term = symmetric_gradient && !work.free_surface[i];
-      const bool own_kernel = own_term && ctx.symmetric_has_own_kernel();
-      for_each_neighbor(ctx, list, p, i, [&](const NeighborPair& q) {
-        const double c = -ctx.laplacian_weight(q.r, q.r2);  // c_ij >= 0
-        const double g = own_term ? ctx.gradient_weight(q.r) : 0.0;
-        const double k = (own_kernel ? ctx.symmetric_gradient_weight(q.r) : g) *
-                         (own_term ? gradient_pair_scale(work, n, i, q.j) : 1.0);
-        for (int a = 0; a < dim; ++a) {
-          missing[a] += c * q.d[a];  // -c (x_j - x_i)
-          cut[a] += g * q.d[a];
-          cut_force[a] += k * q.d[a];
-        }
-        if (q.j >= n) return;
-        diagonal += c;
-        if (work.unknown[q.j] >= 0) {
-          A.column[slot] = work.unknown[q.j];
-          A.value[slot++] = -c;
-        }
-      });
-      if (ghost_surface && work.free_surface[i]) {
-        double m2 = 0.0;
-        for (int a = 0; a < dim; ++a) m2 += missing[a] * missing[a];
-        diagonal += 2.0 * std::sqrt(m2) / ctx.d0;
-      }
-      // Never below zero, so that the matrix stays positive definite: S_i . S_i^K can be negative
-      // where both are small (inside an irregular block, 0.5 % of a diagonal at most in
-      // tests/unit/test_pressure_poisson.cpp); where the support is cut they point the same way.
-      if (own_term)
-        diagonal += std::max(
-            0.0, 2.0 * (cut[0] * cut_force[0] + cut[1] * cut_force[1] + cut[2] * cut_force[2]));
-      A.column[A.row_start[row]] = row;
-      A.value[A.row_start[row]] = diagonal;
+      continue;
     }
-  });
+    std::int64_t slot = A.row_start[row] + 1;
+    double diagonal = 0.0;
+    double missing[3] = {0, 0, 0};    // m_i
+    double cut[3] = {0, 0, 0};        // S_i
+    double cut_force[3] = {0, 0, 0};  // S_i of the symmetric gradient's own kernel
+    // The rows the corrector takes in symmetric form: all but the surface's (corrector.cpp).
+    const bool own_term = symmetric_gradient && !work.free_surface[i];
+    const bool own_kernel = own_term && ctx.symmetric_has_own_kernel();
+    for_each_neighbor(ctx, list, p, i, [&](const NeighborPair& q) {
+      const double c = -ctx.laplacian_weight(q.r, q.r2);  // c_ij >= 0
+      const double g = own_term ? ctx.gradient_weight(q.r) : 0.0;
+      const double k = (own_kernel ? ctx.symmetric_gradient_weight(q.r) : g) *
+                       (own_term ? gradient_pair_scale(work, n, i, q.j) : 1.0);
+      for (int a = 0; a < ctx.dim; ++a) {
+        missing[a] += c * q.d[a];  // -c (x_j - x_i)
+        cut[a] += g * q.d[a];
+        cut_force[a] += k * q.d[a];
+      }
+      if (q.j >= n) return;
+      diagonal += c;
+      if (work.unknown[q.j] >= 0) {
+        A.column[slot] = work.unknown[q.j];
+        A.value[slot++] = -c;
+      }
+    });
+    if (ghost_surface && work.free_surface[i]) {
+      double m2 = 0.0;
+      for (int a = 0; a < ctx.dim; ++a) m2 += missing[a] * missing[a];
+      diagonal += 2.0 * std::sqrt(m2) / ctx.d0;
+    }
+    // Never below zero, so that the matrix stays positive definite: S_i . S_i^K can be negative
+    // where both are small (inside an irregular block, 0.5 % of a diagonal at most in
+    // tests/unit/test_pressure_poisson.cpp); where the support is cut they point the same way.
+    if (own_term)
+      diagonal += std::max(
+          0.0, 2.0 * (cut[0] * cut_force[0] + cut[1] * cut_force[1] + cut[2] * cut_force[2]));
+    A.column[A.row_start[row]] = row;
+    A.value[A.row_start[row]] = diagonal;
+  }
 }
 
 }  // namespace washout

@@ -157,7 +157,7 @@ Simulation::Simulation(Model model)
   features.shifting = prm.shifting > 0 || prm.shifting_with_speed > 0;
   features.surface_smoothing = prm.surface_smoothing > 0;
   features.surface_strain = prm.alpha > 0 && prm.alpha_near_surface == "strain";
-  features.gradient_scale = prm.gradient_scale == "particle";
+  features.gradient_scale = gradient_scale_ = prm.gradient_scale == "particle";
   features.moving_walls = !moving_walls_.empty();
   features.probes = !model_.probes.empty();
   features.reorder = prm.reorder_interval > 0;
@@ -281,12 +281,16 @@ void Simulation::run_stage(Stage stage, StepInProgress& now) {
       grid_.build_list(particles_, particles_.fluid_count, 2.0 * ctx_.h, neighbors_);
       return;
     case Stage::density:
-      compute_summation_density(ctx_, neighbors_, particles_);
+      if (gradient_scale_)
+        compute_summation_density_and_gradient_moment(ctx_, neighbors_, particles_,
+                                                      gradient_forms_.symmetric, work_);
+      else
+        compute_summation_density(ctx_, neighbors_, particles_);
       report.free_surface_particles =
           detect_free_surface(ctx_, neighbors_, particles_, prm.free_surface_threshold, work_);
       return;
     case Stage::gradient_scale:
-      compute_gradient_scale(ctx_, neighbors_, particles_, gradient_forms_.symmetric, work_);
+      scale_from_gradient_moment(neighbors_, particles_, work_);  // the moments: density's walk
       return;
     case Stage::wall_markers:
       total_active_boundary_ += mark_active_boundary(neighbors_, particles_, active_boundary_);

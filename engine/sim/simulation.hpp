@@ -231,6 +231,7 @@ class Simulation {
   std::vector<Stage> plan_;
   bool ghost_surface_ = true;
   GradientForms gradient_forms_;
+  bool gradient_scale_ = false;   // the density's walk also takes the gradient moments
   bool stable_ppe_rows_ = false;  // one PPE row per fluid particle (pcg_amg's reuse)
   double time_ = 0.0;
   long step_ = 0;
