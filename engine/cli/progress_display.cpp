@@ -1,10 +1,14 @@
 #include "engine/cli/progress_display.hpp"
 
+#include <omp.h>
+
 #include <cmath>
 #include <string>
 
 namespace washout::cli {
 namespace {
+
+constexpr double kBusyCoresWindow = 1.0;  // seconds of run over which the cores are judged
 
 std::string clock_text(double seconds) {
   if (!std::isfinite(seconds) || seconds < 0) return "--:--";
@@ -21,6 +25,8 @@ std::string clock_text(double seconds) {
 
 void ProgressDisplay::on_start(const Simulation& sim) {
   start_ = last_print_ = std::chrono::steady_clock::now();
+  busy_cores_ = BusyCoresProbe();
+  busy_cores_judged_ = false;
   const auto& p = sim.particles();
   std::fprintf(out_,
                "washout %s: %s, %dD, %zu fluid + %zu boundary particles, d0 = %g m, h = %g m\n",
@@ -49,7 +55,19 @@ void ProgressDisplay::print_line(const Simulation& sim, const StepReport& r, boo
   std::fflush(out_);
 }
 
+// Judged once, over the run's first second: the run's threads take what the scheduler gives them
+// (spinning at barriers included), and what the machine spent beyond that went elsewhere.
+void ProgressDisplay::judge_busy_cores() {
+  if (busy_cores_judged_ || busy_cores_.seconds() < kBusyCoresWindow) return;
+  busy_cores_judged_ = true;
+  const std::string note = busy_cores_.note(omp_get_max_threads(), kBusyCoresWindow);
+  if (note.empty()) return;
+  std::fprintf(out_, "%s%s\n", live_ ? "\n" : "", note.c_str());
+  std::fflush(out_);
+}
+
 bool ProgressDisplay::on_step(const Simulation& sim, const StepReport& report) {
+  judge_busy_cores();
   if (!live_) return true;
   const auto now = std::chrono::steady_clock::now();
   if (std::chrono::duration<double>(now - last_print_).count() > 0.2) {

@@ -1,10 +1,12 @@
 #pragma once
 // Shows a run's progress. On a terminal: one line rewritten in place (simulated time / end
 // time, step, dt, pressure-solver iterations and residual, wall time, ETA). Otherwise, or with
-// --quiet: one line per output frame.
+// --quiet: one line per output frame. After the first second, a note if other processes leave
+// the run's threads too few cores (busy_cores.hpp).
 #include <chrono>
 #include <cstdio>
 
+#include "engine/cli/busy_cores.hpp"
 #include "engine/sim/simulation.hpp"
 
 namespace washout::cli {
@@ -19,7 +21,10 @@ class ProgressDisplay final : public RunObserver {
 
  private:
   void print_line(const Simulation& sim, const StepReport& r, bool newline);
+  void judge_busy_cores();
   bool live_;
+  BusyCoresProbe busy_cores_;
+  bool busy_cores_judged_ = false;
   std::FILE* out_;
   std::chrono::steady_clock::time_point start_, last_print_;
 };
