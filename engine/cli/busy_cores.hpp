@@ -3,9 +3,10 @@
 // at a barrier, so an OpenMP thread that waits for a busy core holds up the whole team: with one
 // of two cores taken by another process, the 3D dam break at a/20 ran 3.4 times slower on two
 // threads than on a quiet machine, and 1.8 times slower than on one thread (docs/performance.md,
-// thirty-fifth session). The run measures what the other processes took while it built the
-// scene (the machine's busy time from /proc/stat less its own processor time) and says so when
-// its threads will not all find a core.
+// thirty-fifth session). The run measures what the other processes took over its first second
+// (the machine's busy time from /proc/stat less the run's own processor time: its threads take
+// what the scheduler gives them, spinning at barriers included; progress_display.cpp) and says so
+// when its threads will not all find a core.
 #include <optional>
 #include <string>
 
