@@ -3,13 +3,17 @@
 #include <algorithm>
 #include <cctype>
 #include <chrono>
+#include <cmath>
 #include <cstdio>
 #include <ctime>
 #include <fstream>
+#include <limits>
 #include <sstream>
 
 namespace washout {
 namespace {
+
+constexpr unsigned long long kFewestTicks = 50;
 
 double wall_now() {
   return std::chrono::duration<double>(std::chrono::steady_clock::now().time_since_epoch()).count();
@@ -59,10 +63,13 @@ double cores_busy_elsewhere(const MachineTicks& before, const MachineTicks& afte
   return std::max(0.0, busy_share * after.cores - own_cpu_seconds / wall_seconds);
 }
 
+bool threads_lack_cores(int threads, int cores, double busy_elsewhere) {
+  return threads > 1 && threads >= cores - busy_elsewhere + 0.5;
+}
+
 std::string busy_cores_note(int threads, int cores, double busy_elsewhere) {
-  if (threads <= 1) return "";
+  if (!threads_lack_cores(threads, cores, busy_elsewhere)) return "";
   const double idle = cores - busy_elsewhere;
-  if (threads < idle + 0.5) return "";
   char note[400];
   std::snprintf(note, sizeof note,
                 "note: other processes keep %.1f of the %d cores busy, and %d threads will not all "
@@ -77,14 +84,22 @@ BusyCoresProbe::BusyCoresProbe()
 
 double BusyCoresProbe::seconds() const { return wall_now() - start_wall_; }
 
-std::string BusyCoresProbe::note(int threads, double min_seconds) const {
-  const double wall = seconds();
-  if (!start_ || wall < min_seconds) return "";
+double BusyCoresProbe::busy_elsewhere() const {
   const auto now = read_machine_ticks();
-  if (!now) return "";
-  const double elsewhere =
-      cores_busy_elsewhere(*start_, *now, process_cpu_seconds() - start_cpu_, wall);
-  return busy_cores_note(threads, now->cores, elsewhere);
+  const double wall = seconds();
+  // Fewer than kFewestTicks a core in between (half a second at Linux's 100 Hz): too coarse.
+  if (!start_ || !now || now->total < start_->total + kFewestTicks * now->cores || !(wall > 0.0))
+    return std::numeric_limits<double>::quiet_NaN();
+  return cores_busy_elsewhere(*start_, *now, process_cpu_seconds() - start_cpu_, wall);
+}
+
+int BusyCoresProbe::cores() const { return start_ ? start_->cores : 0; }
+
+std::string BusyCoresProbe::note(int threads, double min_seconds) const {
+  if (!start_ || seconds() < min_seconds) return "";
+  const double elsewhere = busy_elsewhere();
+  if (!std::isfinite(elsewhere)) return "";
+  return busy_cores_note(threads, cores(), elsewhere);
 }
 
 }  // namespace washout

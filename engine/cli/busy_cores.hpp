@@ -29,8 +29,10 @@ std::optional<MachineTicks> read_machine_ticks();
 double cores_busy_elsewhere(const MachineTicks& before, const MachineTicks& after,
                             double own_cpu_seconds, double wall_seconds);
 
-// A note for the run's log when `threads` (more than one) exceed the cores left idle by half a
-// core or more; empty otherwise.
+// Whether `threads` (more than one) exceed the cores other processes left idle by half a core or
+// more: then some thread waits for a core and holds up every step.
+bool threads_lack_cores(int threads, int cores, double busy_elsewhere);
+// A note for the run's log when they do; empty otherwise.
 std::string busy_cores_note(int threads, int cores, double busy_elsewhere);
 
 // Measures over the interval from its construction to note() (at least min_seconds long, else
@@ -39,6 +41,10 @@ class BusyCoresProbe {
  public:
   BusyCoresProbe();
   std::string note(int threads, double min_seconds) const;
+  // The cores other processes kept busy since construction; NaN where it cannot be told (no
+  // /proc/stat, or under half a second of clock ticks in between).
+  double busy_elsewhere() const;
+  int cores() const;       // the machine's, 0 where unknown
   double seconds() const;  // since construction
 
  private:

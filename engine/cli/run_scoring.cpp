@@ -4,6 +4,7 @@
 
 #include <cmath>
 
+#include "engine/cli/busy_cores.hpp"
 #include "engine/io/run_file_writer.hpp"
 
 namespace washout::cli {
@@ -31,7 +32,10 @@ void write_run_scores(const std::string& run_file, const RunCost& cost,
       {"particles", static_cast<double>(cost.particles)},
       {"fluid_particles", static_cast<double>(cost.fluid_particles)},
       {"steps", static_cast<double>(cost.steps)},
-      {"peak_rss_bytes", static_cast<double>(cost.peak_rss_bytes)}};
+      {"peak_rss_bytes", static_cast<double>(cost.peak_rss_bytes)},
+      {"threads", static_cast<double>(cost.threads)},
+      {"cores", static_cast<double>(cost.cores)},
+      {"cores_busy_elsewhere", cost.cores_busy_elsewhere}};
   std::vector<std::pair<std::string, std::string>> texts;
   std::string names;
   for (const auto& s : scores) {
@@ -63,9 +67,17 @@ void print_run_scores(std::FILE* out, const RunCost& cost,
     std::fprintf(out, ")\n");
   }
   std::fprintf(out,
-               "cost: wall %.2f s, %zu particles (%zu fluid), %ld steps, peak memory %.0f MB\n",
+               "cost: wall %.2f s, %zu particles (%zu fluid), %ld steps, peak memory %.0f MB, "
+               "%d threads",
                cost.wall_seconds, cost.particles, cost.fluid_particles, cost.steps,
-               cost.peak_rss_bytes / 1048576.0);
+               cost.peak_rss_bytes / 1048576.0, cost.threads);
+  if (std::isfinite(cost.cores_busy_elsewhere))
+    std::fprintf(out, ", other processes kept %.1f of %d cores busy%s", cost.cores_busy_elsewhere,
+                 cost.cores,
+                 threads_lack_cores(cost.threads, cost.cores, cost.cores_busy_elsewhere)
+                     ? " (the threads waited for cores: not the machine's time)"
+                     : "");
+  std::fprintf(out, "\n");
 }
 
 }  // namespace washout::cli

@@ -4,6 +4,7 @@
 // stored as root attributes of the run file, where `washout study` collects them
 // (docs/validation.md). Application side only: the physics core knows nothing of references.
 #include <cstdio>
+#include <limits>
 #include <string>
 #include <vector>
 
@@ -18,12 +19,18 @@ struct RunCost {
   std::size_t fluid_particles = 0;
   long steps = 0;
   long peak_rss_bytes = 0;  // of this process (getrusage), so of this run in `washout run`
+  // Whether the wall time is the machine's: the run's threads, the machine's cores and the cores
+  // other processes kept busy over the run (busy_cores.hpp; NaN where unknown). A run whose
+  // threads did not all find a core ran slower than the machine can (docs/performance.md).
+  int threads = 0, cores = 0;
+  double cores_busy_elsewhere = std::numeric_limits<double>::quiet_NaN();
 };
 
 RunCost run_cost(const RunSummary& summary);
 long peak_rss_bytes();
 
-// Root attributes wall_seconds, particles, fluid_particles, steps, peak_rss_bytes and, when
+// Root attributes wall_seconds, particles, fluid_particles, steps, peak_rss_bytes, threads,
+// cores, cores_busy_elsewhere and, when
 // scores are given, error, error_metric, reference, error_bound (the primary, the first score)
 // plus error_NAME / error_bound_NAME for every score and error_names (comma separated).
 // Throws io::OutputError.

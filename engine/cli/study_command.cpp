@@ -122,6 +122,9 @@ void read_run(const std::string& h5, StudyRow& row) {
     row.fluid_particles = attr("fluid_particles");
     row.steps = attr("steps");
     row.peak_rss_bytes = attr("peak_rss_bytes");
+    row.threads = attr("threads");
+    row.cores = attr("cores");
+    row.cores_busy_elsewhere = attr("cores_busy_elsewhere");
     if (run.has("/stats/ppe_iterations")) {
       const auto it = run.read_doubles("/stats/ppe_iterations");
       if (!it.empty())
@@ -381,6 +384,9 @@ int run_study_command(int argc, char** argv) {
     if (std::isfinite(row.particles)) std::printf(" %8.0f particles", row.particles);
     std::printf(" %9.1f s", row.wall_min());
     if (!row.errors.empty()) std::printf("  error %.4g", row.errors.front().second);
+    if (row.waited_for_cores())
+      std::printf("  (other processes kept %.1f cores busy: its threads waited)",
+                  row.cores_busy_elsewhere);
     std::printf("\n");
   }
   for (const auto& f : fit_convergence(table)) {

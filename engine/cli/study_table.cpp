@@ -5,6 +5,8 @@
 #include <fstream>
 #include <map>
 
+#include "engine/cli/busy_cores.hpp"
+
 namespace washout::cli {
 namespace {
 
@@ -30,6 +32,12 @@ double lookup(const std::vector<std::pair<std::string, double>>& v, const std::s
 }
 
 }  // namespace
+
+bool StudyRow::waited_for_cores() const {
+  return std::isfinite(threads) && std::isfinite(cores) && std::isfinite(cores_busy_elsewhere) &&
+         threads_lack_cores(static_cast<int>(threads), static_cast<int>(cores),
+                            cores_busy_elsewhere);
+}
 
 double StudyRow::wall_min() const {
   if (wall_seconds.empty()) return std::numeric_limits<double>::quiet_NaN();
@@ -58,7 +66,8 @@ bool StudyTable::write_csv(const std::string& path) const {
   const auto scores = score_names();
   for (const auto& n : names) out << cell(n) << ",";
   out << "status,exit_code,particles,fluid_particles,steps,wall_seconds_min,wall_seconds_median,"
-         "repeats,peak_rss_bytes,ppe_iterations_per_step,error,error_bound";
+         "repeats,peak_rss_bytes,ppe_iterations_per_step,threads,cores_busy_elsewhere,error,"
+         "error_bound";
   // Every score beyond the primary gets its own pair of columns.
   for (std::size_t k = 1; k < scores.size(); ++k)
     out << ",error_" << scores[k] << ",error_bound_" << scores[k];
@@ -68,7 +77,8 @@ bool StudyTable::write_csv(const std::string& path) const {
     out << cell(r.status) << "," << r.exit_code << "," << number(r.particles) << ","
         << number(r.fluid_particles) << "," << number(r.steps) << "," << number(r.wall_min()) << ","
         << number(r.wall_median()) << "," << r.wall_seconds.size() << ","
-        << number(r.peak_rss_bytes) << "," << number(r.ppe_iterations_per_step);
+        << number(r.peak_rss_bytes) << "," << number(r.ppe_iterations_per_step) << ","
+        << number(r.threads) << "," << number(r.cores_busy_elsewhere);
     for (std::size_t k = 0; k < std::max<std::size_t>(scores.size(), 1); ++k) {
       const std::string name = k < scores.size() ? scores[k] : "";
       out << "," << number(lookup(r.errors, name)) << "," << number(lookup(r.bounds, name));

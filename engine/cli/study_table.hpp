@@ -17,6 +17,12 @@ struct StudyRow {
   std::vector<double> wall_seconds;  // one per repeat: the whole child run, setup included
   double peak_rss_bytes = 0;
   double ppe_iterations_per_step = std::numeric_limits<double>::quiet_NaN();
+  // The run's threads and the cores other processes kept busy beside it (run_scoring.hpp):
+  // a row whose threads waited for cores has a wall time that is not the machine's.
+  double threads = std::numeric_limits<double>::quiet_NaN();
+  double cores = std::numeric_limits<double>::quiet_NaN();
+  double cores_busy_elsewhere = std::numeric_limits<double>::quiet_NaN();
+  bool waited_for_cores() const;
   // Scores in the scene's order; the first is the primary `error`.
   std::vector<std::pair<std::string, double>> errors, bounds;
   std::string error_metric;

@@ -65,6 +65,10 @@ TEST(BusyCores, NotesOnlyThreadsThatWillWaitForACore) {
   // Sixteen cores, eight threads beside four busy cores: room enough.
   EXPECT_TRUE(busy_cores_note(8, 16, 4.0).empty());
   EXPECT_NE(busy_cores_note(16, 16, 4.0).find("--threads 12"), std::string::npos);
+  // The same threshold as the note's, for the cost line and the study's rows.
+  EXPECT_FALSE(threads_lack_cores(2, 2, 0.45));
+  EXPECT_TRUE(threads_lack_cores(2, 2, 0.5));
+  EXPECT_FALSE(threads_lack_cores(1, 2, 1.9));
 }
 
 }  // namespace

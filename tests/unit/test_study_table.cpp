@@ -75,5 +75,34 @@ TEST(StudyTable, CsvHasMinAndMedianWallTimeAndEmptyCellsForNan) {
   EXPECT_NE(second.find(",,0.5,"), std::string::npos) << second;  // no error, bound 0.5
 }
 
+// A row's wall time is the machine's only when its threads found their cores: the study marks the
+// rows whose threads outnumbered the cores other processes left idle, and writes both figures.
+TEST(StudyTable, RowsWhoseThreadsWaitedForCoresAreMarked) {
+  StudyRow quiet = row("0.02", 0.1), busy = row("0.01", 0.2), single = row("0.005", 0.3);
+  quiet.threads = busy.threads = 2, single.threads = 1;
+  quiet.cores = busy.cores = single.cores = 2;
+  quiet.cores_busy_elsewhere = 0.1;
+  busy.cores_busy_elsewhere = single.cores_busy_elsewhere = 1.0;
+  EXPECT_FALSE(quiet.waited_for_cores());
+  EXPECT_TRUE(busy.waited_for_cores());
+  EXPECT_FALSE(single.waited_for_cores());            // one thread waits for no other
+  EXPECT_FALSE(row("0.01", 0.2).waited_for_cores());  // an older run file: not known
+  StudyTable t;
+  t.names = {"d0"};
+  t.rows = {quiet, busy};
+  const auto path = std::filesystem::temp_directory_path() / "washout_study_cores.csv";
+  ASSERT_TRUE(t.write_csv(path.string()));
+  std::ifstream in(path);
+  std::string header, first, second;
+  std::getline(in, header);
+  std::getline(in, first);
+  std::getline(in, second);
+  EXPECT_NE(header.find(",ppe_iterations_per_step,threads,cores_busy_elsewhere,"),
+            std::string::npos)
+      << header;
+  EXPECT_NE(first.find(",2,0.1,"), std::string::npos) << first;
+  EXPECT_NE(second.find(",2,1,"), std::string::npos) << second;
+}
+
 }  // namespace
 }  // namespace washout::cli
