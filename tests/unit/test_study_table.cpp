@@ -4,6 +4,8 @@
 #include <cmath>
 #include <filesystem>
 #include <fstream>
+#include <string>
+#include <vector>
 
 #include "engine/cli/study_table.hpp"
 
@@ -19,6 +21,21 @@ StudyRow row(const std::string& d0, double error, const std::string& status = "o
   r.errors = {{"front", error}};
   r.bounds = {{"front", 0.5}};
   return r;
+}
+
+// The table of rows over d0, written as CSV and read back: its header and each row, as lines.
+std::vector<std::string> csv_lines(const std::vector<StudyRow>& rows, const std::string& name) {
+  StudyTable t;
+  t.names = {"d0"};
+  t.rows = rows;
+  const auto path = std::filesystem::temp_directory_path() / name;
+  EXPECT_TRUE(t.write_csv(path.string()));
+  std::ifstream in(path);
+  std::vector<std::string> lines;
+  for (std::string line; std::getline(in, line);) lines.push_back(line);
+  EXPECT_EQ(lines.size(), rows.size() + 1);
+  lines.resize(rows.size() + 1);
+  return lines;
 }
 
 TEST(StudyTable, SecondOrderErrorGivesOrderTwo) {
@@ -59,16 +76,9 @@ TEST(StudyTable, OtherVariedValuesMakeSeparateFits) {
 }
 
 TEST(StudyTable, CsvHasMinAndMedianWallTimeAndEmptyCellsForNan) {
-  StudyTable t;
-  t.names = {"d0"};
-  t.rows = {row("0.02", 0.1), row("0.01", NAN, "unstable")};
-  const auto path = std::filesystem::temp_directory_path() / "washout_study_table.csv";
-  ASSERT_TRUE(t.write_csv(path.string()));
-  std::ifstream in(path);
-  std::string header, first, second;
-  std::getline(in, header);
-  std::getline(in, first);
-  std::getline(in, second);
+  const auto lines =
+      csv_lines({row("0.02", 0.1), row("0.01", NAN, "unstable")}, "washout_study_table.csv");
+  const std::string &header = lines[0], &first = lines[1], &second = lines[2];
   EXPECT_EQ(header.rfind("d0,status,exit_code,particles", 0), 0u) << header;
   EXPECT_NE(first.find(",1,2,3,"), std::string::npos) << first;  // min 1, median 2, 3 repeats
   EXPECT_NE(second.find("unstable,2,"), std::string::npos) << second;
@@ -87,16 +97,8 @@ TEST(StudyTable, RowsWhoseThreadsWaitedForCoresAreMarked) {
   EXPECT_TRUE(busy.waited_for_cores());
   EXPECT_FALSE(single.waited_for_cores());            // one thread waits for no other
   EXPECT_FALSE(row("0.01", 0.2).waited_for_cores());  // an older run file: not known
-  StudyTable t;
-  t.names = {"d0"};
-  t.rows = {quiet, busy};
-  const auto path = std::filesystem::temp_directory_path() / "washout_study_cores.csv";
-  ASSERT_TRUE(t.write_csv(path.string()));
-  std::ifstream in(path);
-  std::string header, first, second;
-  std::getline(in, header);
-  std::getline(in, first);
-  std::getline(in, second);
+  const auto lines = csv_lines({quiet, busy}, "washout_study_cores.csv");
+  const std::string &header = lines[0], &first = lines[1], &second = lines[2];
   EXPECT_NE(header.find(",ppe_iterations_per_step,threads,cores_busy_elsewhere,"),
             std::string::npos)
       << header;
