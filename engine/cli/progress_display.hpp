@@ -18,6 +18,8 @@ class ProgressDisplay final : public RunObserver {
   bool on_step(const Simulation& sim, const StepReport& report) override;
   bool on_frame(const Simulation& sim, std::size_t frame) override;
   void on_finish(const Simulation& sim, const RunSummary& summary) override;
+  // What other processes took of the cores since the run started (the run's cost reads it too).
+  const BusyCoresProbe& busy_cores() const { return busy_cores_; }
 
  private:
   void print_line(const Simulation& sim, const StepReport& r, bool newline);

@@ -12,7 +12,6 @@
 
 #include "engine/cli/assignment_argument.hpp"
 #include "engine/cli/body_report.hpp"
-#include "engine/cli/busy_cores.hpp"
 #include "engine/cli/frame_output.hpp"
 #include "engine/cli/interrupt.hpp"
 #include "engine/cli/progress_display.hpp"
@@ -142,7 +141,6 @@ RunOutcome run_scene(const RunRequest& request) {
     InterruptObserver interrupt;  // last, so that its reason names the signal
     observers.push_back(&interrupt);
     run_started = true;
-    const BusyCoresProbe whole_run;  // whether the run's wall time is the machine's
     outcome.summary = sim.run(observers, resume ? &*resume : nullptr);
     // Each body's CSV and wash-out summary, also after an unstable run (its file stays readable).
     outcome.bodies = report_bodies(outcome.h5_path, out_dir, gravity, request.log);
@@ -151,8 +149,8 @@ RunOutcome run_scene(const RunRequest& request) {
     // Cost and, for a completed validation scene, the error against its reference.
     outcome.cost = run_cost(outcome.summary);
     outcome.cost.threads = omp_get_max_threads();
-    outcome.cost.cores = whole_run.cores();
-    outcome.cost.cores_busy_elsewhere = whole_run.busy_elsewhere();
+    outcome.cost.cores = progress.busy_cores().cores();  // whether the wall time is the machine's
+    outcome.cost.cores_busy_elsewhere = progress.busy_cores().busy_elsewhere();
     if (outcome.summary.status != RunStatus::Unstable && !interrupted && scene.validates())
       outcome.scores = scene.score(outcome.h5_path);
     write_run_scores(outcome.h5_path, outcome.cost, outcome.scores);
