@@ -15,8 +15,9 @@
 // pressure) belongs to none: Jacobi solves it exactly. The rows are taken in fixed blocks that
 // aggregate on their own, so that the set-up runs on all threads and does not depend on their
 // number (the fluid is sorted by cell, so a block of rows is a compact piece of the flow).
-// The coarse system is factorised (Eigen's simplicial Cholesky): its size grows as the fine
-// one's, so this is a solver for the sizes below BoomerAMG's (docs/performance.md).
+// The coarse system is factorised (Eigen's simplicial Cholesky; solved by
+// cholesky_factor_solve.hpp): its size grows as the fine one's, so this is a solver for the sizes
+// below BoomerAMG's (docs/performance.md).
 #include <omp.h>
 
 #include <Eigen/SparseCholesky>
@@ -25,6 +26,7 @@
 #include <chrono>
 #include <cmath>
 
+#include "engine/solvers/cholesky_factor_solve.hpp"
 #include "engine/solvers/preconditioner.hpp"
 #include "engine/solvers/solver_counters.hpp"
 
@@ -103,7 +105,7 @@ class AggregationPreconditioner final : public Preconditioner {
         for (std::int32_t e = member_start_[c]; e < member_start_[c + 1]; ++e) sum += r[member_[e]];
         coarse_rhs_[c] = sum;
       }
-      coarse_solution_ = coarse_factor_.solve(coarse_rhs_);
+      coarse_solve_.solve(coarse_rhs_, coarse_solution_);
     }
 #pragma omp parallel for schedule(static) if (parallel)
     for (std::size_t i = 0; i < n; ++i) {
@@ -284,6 +286,7 @@ class AggregationPreconditioner final : public Preconditioner {
       throw SolverError("the pressure solve's coarse system (aggregates) is not positive definite");
     factor_nonzeros_ =
         static_cast<std::size_t>(coarse_factor_.matrixL().nestedExpression().nonZeros());
+    coarse_solve_.build(coarse_factor_);
   }
 
   struct Part {  // one thread's columns of the coarse matrix
@@ -302,7 +305,8 @@ class AggregationPreconditioner final : public Preconditioner {
   std::vector<int> outer_, inner_;
   std::vector<double> values_;
   Eigen::SparseMatrix<double> coarse_;
-  Eigen::SimplicialLLT<Eigen::SparseMatrix<double>, Eigen::Lower> coarse_factor_;
+  CholeskyFactorSolve::Factor coarse_factor_;
+  CholeskyFactorSolve coarse_solve_;  // the factor's solves, its bits, its chains interleaved
   Eigen::VectorXd coarse_rhs_, coarse_solution_;
 };
 
