@@ -144,7 +144,9 @@ TEST(BodySurfacePressure, OutOfReachOnlyWhereNoSearchWouldFindFluid) {
       } else {
         ++in_reach;
       }
-      if (gap >= 5.0) EXPECT_TRUE(out) << "gap " << gap << ", angle " << angle;
+      if (gap >= 5.0) {
+        EXPECT_TRUE(out) << "gap " << gap << ", angle " << angle;
+      }
     }
   }
   std::printf("%d placements out of reach (no search needed), %d in reach\n", out_of_reach,
