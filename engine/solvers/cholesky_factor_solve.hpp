@@ -10,8 +10,9 @@
 // their four chains interleaved, each sum still in its own order (so every x_j is Eigen's to the
 // bit: tests/unit/test_cholesky_factor_solve.cpp). L y = b is Eigen's own loop: there each column
 // subtracts its products from the rows below it, no chain of sums.
-// Used for the coarse system of pcg_agg (aggregation_preconditioner.cpp): 0.61 -> 0.4 ms a solve
-// at 3,400 aggregates, a third of each iteration (docs/performance.md, thirty-sixth session).
+// Used for the coarse system of pcg_agg (aggregation_preconditioner.cpp): 0.65 -> 0.53 ms a solve
+// at 3,429 aggregates, where it took a third of each iteration (docs/performance.md, thirty-sixth
+// session). Most of what is left is the tree's top, a chain of dense columns.
 #include <Eigen/SparseCholesky>
 #include <cstdint>
 #include <vector>
@@ -22,8 +23,8 @@ class CholeskyFactorSolve {
  public:
   using Factor = Eigen::SimplicialLLT<Eigen::SparseMatrix<double>, Eigen::Lower>;
 
-  // Takes the factor's structure and values and orders L^T's columns by depth in the tree. Call
-  // again after each compute() of the factor.
+  // Orders L^T's columns by depth in the factor's tree. The solves read the factor's arrays in
+  // place: keep it alive, and call again after each compute() of it.
   void build(const Factor& factor);
 
   // x = A^-1 b with the factor given to build().
