@@ -30,22 +30,24 @@ class CholeskyFactorSolve {
   // x = A^-1 b with the factor given to build().
   void solve(const Eigen::VectorXd& b, Eigen::VectorXd& x);
 
-  std::size_t rows() const { return static_cast<std::size_t>(n_); }
+  std::size_t rows() const { return factor_ ? static_cast<std::size_t>(factor_->rows()) : 0; }
   // The depths of the tree: the longest chain of columns that must wait for each other.
   std::size_t depths() const { return depth_start_.empty() ? 0 : depth_start_.size() - 1; }
 
  private:
-  void forward();   // L y = b in place, Eigen's loop
-  void backward();  // L^T x = y in place, the columns of each depth four at a time
+  // L by columns, in the factor's own arrays: the diagonal first, rows increasing.
+  struct Columns {
+    std::int64_t n;
+    const int *start, *row;
+    const double* value;
+  };
+  Columns columns() const;
+  void forward(const Columns& L);   // L y = b in place, Eigen's loop
+  void backward(const Columns& L);  // L^T x = y in place, the columns of each depth four at a time
 
-  std::int64_t n_ = 0;
-  const int* start_ =
-      nullptr;  // L by columns (Eigen's arrays), the diagonal first, rows increasing
-  const int* row_ = nullptr;
-  const double* value_ = nullptr;
+  const Factor* factor_ = nullptr;
   std::vector<std::int32_t> by_depth_;     // the columns, depth by depth from the root
   std::vector<std::int64_t> depth_start_;  // where each depth begins in by_depth_
-  Eigen::PermutationMatrix<Eigen::Dynamic, Eigen::Dynamic, int> P_, Pinv_;
   Eigen::VectorXd work_;
 };
 
