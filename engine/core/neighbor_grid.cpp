@@ -90,6 +90,36 @@ void NeighborGrid::build(const Particles& particles, double radius, const Period
     for (int a = 0; a < 3; ++a) sorted_position_[a][k] = particles.position[a][sorted_[k]];
 }
 
+std::size_t NeighborGrid::collect_below(const Particles& particles, const double p[3],
+                                        std::uint32_t limit, double radius2,
+                                        std::vector<std::uint32_t>& found) const {
+  // The particles' own positions, not build()'s copies: callers search after the fluid has
+  // moved within a step (the probes, the push-out), from the cells it was bucketed in.
+  const double* X = particles.position[0].data();
+  const double* Y = particles.position[1].data();
+  const double* Z = particles.position[2].data();
+  const std::uint32_t* sj = sorted_.data();
+  const bool periodic = periodic_.any();
+  // As build_list: every candidate written, the count advanced past the hits only (about a
+  // quarter of the candidates, at random: a branch on each was mispredicted often). A wall
+  // candidate is read as index 0's position and then not counted.
+  std::size_t count = 0;
+  for_each_cell_around(p, [&](std::uint32_t begin, std::uint32_t end) {
+    if (found.size() < count + (end - begin)) found.resize(2 * (count + (end - begin)));
+    std::uint32_t* out = found.data();
+    for (std::uint32_t k = begin; k < end; ++k) {
+      const std::uint32_t j = sj[k];
+      const bool below = j < limit;
+      const std::uint32_t read = below ? j : 0;
+      double d[3] = {p[0] - X[read], p[1] - Y[read], p[2] - Z[read]};
+      if (periodic) periodic_.minimum_image(d);
+      out[count] = j;
+      count += below & (d[0] * d[0] + d[1] * d[1] + d[2] * d[2] < radius2);
+    }
+  });
+  return count;
+}
+
 void NeighborGrid::build_list(const Particles& particles, std::size_t query_count, double radius,
                               NeighborList& list) const {
   const double r2max = radius * radius;

@@ -38,6 +38,13 @@ class NeighborGrid {
   template <class Visit>
   void for_each_candidate_below(const double p[3], std::uint32_t limit, Visit&& visit) const;
 
+  // The particles with index below `limit` closer to p than sqrt(radius2) (periodic minimum
+  // image) at their current positions, in for_each_candidate_below's order: written to
+  // found[0, returned count), found grown as needed and never shrunk (a caller's buffer, kept
+  // between searches). Tested without a branch per candidate.
+  std::size_t collect_below(const Particles& particles, const double p[3], std::uint32_t limit,
+                            double radius2, std::vector<std::uint32_t>& found) const;
+
   // CSR list of all j != i with |x_i - x_j| < radius, for i in [0, query_count).
   void build_list(const Particles& particles, std::size_t query_count, double radius,
                   NeighborList& list) const;

@@ -80,7 +80,7 @@ void correct_velocity(const SphContext& ctx, const NeighborList& list, Particles
     const bool surface = work.free_surface[i] != 0;
     // Ghost rows: surface particles whose pressure the PPE solved with ghost neighbours.
     const bool ghost = surface && forms.ghost_surface && work.unknown[i] >= 0;
-    Eigen::Matrix3d L;
+    Eigen::Matrix3d L = Eigen::Matrix3d::Identity();  // set when corrected; initialised for -Wall
     const bool corrected = surface && !ghost && gradient_correction_matrix(ctx, list, p, i, L);
     const double Pi = p.pressure[i];
     // A boundary neighbour carries the virtual pressure of the Neumann wall condition.
