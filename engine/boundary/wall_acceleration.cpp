@@ -1,5 +1,7 @@
 #include "engine/boundary/wall_acceleration.hpp"
 
+#include <algorithm>
+
 namespace washout {
 
 void update_wall_accelerations(const Particles& p, const std::vector<std::uint8_t>& solved_body,
@@ -7,9 +9,14 @@ void update_wall_accelerations(const Particles& p, const std::vector<std::uint8_
                                BoundaryWork& work) {
   const std::size_t n = p.size(), first = p.fluid_count;
   for (int a = 0; a < 3; ++a) {
-    work.wall_acceleration[a].assign(n, 0.0);
+    work.wall_acceleration[a].resize(n);
+    std::fill(work.wall_acceleration[a].begin(), work.wall_acceleration[a].begin() + first, 0.0);
     if (previous[a].size() != n) previous[a].assign(p.velocity[a].begin(), p.velocity[a].end());
   }
+  // Every wall particle, wet or dry (a dry one's velocity history is needed when it wets): on
+  // all threads, as the other stages (serial, this loop over 55,000 walls was 1 % of the 3D
+  // dam break at a/20 and did not scale).
+#pragma omp parallel for schedule(static)
   for (std::size_t w = first; w < n; ++w) {
     const std::int32_t b = p.body[w];
     const bool solved =
