@@ -49,10 +49,20 @@ void CholeskyFactorSolve::forward(const Columns& L) {
 
 void CholeskyFactorSolve::backward(const Columns& L) {
   double* x = work_.data();
-  // x_j = (y_j - sum_{k} L_kj x_k) / L_jj, the sum in the column's order as Eigen takes it.
+  // x_j = (y_j - sum_{k} L_kj x_k) / L_jj. What a group of four leaves (the tree's top: a chain
+  // of long columns, one to a depth) is summed in four partial sums, four chains at once.
   const auto finish = [&](std::int32_t j, std::int64_t from, double sum) {
-    for (std::int64_t k = from; k < L.start[j + 1]; ++k) sum -= L.value[k] * x[L.row[k]];
-    x[j] = sum / L.value[L.start[j]];
+    const std::int64_t end = L.start[j + 1];
+    double s1 = 0.0, s2 = 0.0, s3 = 0.0;
+    std::int64_t k = from;
+    for (; k + 4 <= end; k += 4) {
+      sum -= L.value[k] * x[L.row[k]];
+      s1 -= L.value[k + 1] * x[L.row[k + 1]];
+      s2 -= L.value[k + 2] * x[L.row[k + 2]];
+      s3 -= L.value[k + 3] * x[L.row[k + 3]];
+    }
+    for (; k < end; ++k) sum -= L.value[k] * x[L.row[k]];
+    x[j] = (sum + (s1 + s2 + s3)) / L.value[L.start[j]];
   };
   for (std::size_t d = 0; d + 1 < depth_start_.size(); ++d) {
     std::int64_t g = depth_start_[d];

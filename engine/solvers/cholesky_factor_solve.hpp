@@ -1,18 +1,20 @@
 #pragma once
-// The two triangular solves of a sparse Cholesky factor (Eigen's SimplicialLLT, L L^T = P A P^T)
-// to the same bits as the factor's own solve, faster.
+// The two triangular solves of a sparse Cholesky factor (Eigen's SimplicialLLT, L L^T = P A P^T),
+// faster than the factor's own solve and equal to it to rounding.
 //
 // Eigen solves L^T x = y column by column, x_j = (y_j - sum_{i > j} L_ij x_i) / L_jj, each sum
 // one chain of dependent multiply-adds: a product waits for the one before it (about four
 // cycles each), however many independent columns there are. Column j needs the x_i of its
 // ancestors in the elimination tree (parent(j) = the first row under the diagonal of column j),
 // so the columns at one depth of the tree are independent; here they are taken four at a time,
-// their four chains interleaved, each sum still in its own order (so every x_j is Eigen's to the
-// bit: tests/unit/test_cholesky_factor_solve.cpp). L y = b is Eigen's own loop: there each column
-// subtracts its products from the rows below it, no chain of sums.
+// their four chains interleaved, each sum in Eigen's order. The tree's top, a chain of long
+// columns one to a depth, has nothing to interleave: each of its sums is split into four partial
+// sums (another rounding; tests/unit/test_cholesky_factor_solve.cpp holds it to Eigen's solve).
+// L y = b is Eigen's own loop: there each column subtracts its products from the rows below it,
+// no chain of sums.
 // Used for the coarse system of pcg_agg (aggregation_preconditioner.cpp): 0.65 -> 0.53 ms a solve
-// at 3,429 aggregates, where it took a third of each iteration (docs/performance.md, thirty-sixth
-// session). Most of what is left is the tree's top, a chain of dense columns.
+// at 3,429 aggregates with the interleaving alone, where it took a third of each iteration
+// (docs/performance.md, thirty-sixth and thirty-seventh sessions).
 #include <Eigen/SparseCholesky>
 #include <cstdint>
 #include <vector>

@@ -1,9 +1,9 @@
 // The Cholesky factor's solves with independent columns interleaved give the factor's own
-// solution to the bit (engine/solvers/cholesky_factor_solve.hpp).
+// solution to rounding (engine/solvers/cholesky_factor_solve.hpp): the columns of the tree's
+// top are summed in four partial sums, the others in Eigen's order.
 #include <gtest/gtest.h>
 
 #include <Eigen/SparseCholesky>
-#include <cstring>
 #include <random>
 #include <vector>
 
@@ -46,7 +46,7 @@ Eigen::SparseMatrix<double> lattice_system(int length, int side, int blocks, uns
   return A;  // the lower triangle, which the factor reads
 }
 
-TEST(CholeskyFactorSolve, GivesTheFactorsOwnSolutionToTheBit) {
+TEST(CholeskyFactorSolve, GivesTheFactorsOwnSolutionToRounding) {
   for (const int blocks : {1, 3}) {
     const Eigen::SparseMatrix<double> A = lattice_system(20, 9, blocks, 7u + blocks);
     CholeskyFactorSolve::Factor factor(A);
@@ -65,11 +65,16 @@ TEST(CholeskyFactorSolve, GivesTheFactorsOwnSolutionToTheBit) {
     // column taken before one it needs would leave a residual of order 1).
     const Eigen::SparseMatrix<double> full = A.selfadjointView<Eigen::Lower>();
     const double residual = (full * x - b).norm() / b.norm();
-    std::printf("%d pieces: %zu rows, %zu depths, residual %.2e\n", blocks, fast.rows(),
-                fast.depths(), residual);
-    EXPECT_LT(residual, 1e-10);
     ASSERT_EQ(x.size(), expected.size());
-    EXPECT_EQ(std::memcmp(x.data(), expected.data(), sizeof(double) * x.size()), 0);
+    // Another order of a sum moves a solution by about its condition number times the
+    // rounding, 1e4 x 1e-16 relative; a wrong entry of L or a column out of its turn, by far
+    // more (order 1).
+    const double difference =
+        (x - expected).lpNorm<Eigen::Infinity>() / expected.lpNorm<Eigen::Infinity>();
+    std::printf("%d pieces: %zu rows, %zu depths, residual %.2e, from Eigen's solve %.2e\n", blocks,
+                fast.rows(), fast.depths(), residual, difference);
+    EXPECT_LT(residual, 1e-10);
+    EXPECT_LT(difference, 1e-10);
     EXPECT_LT(fast.depths(), fast.rows());  // columns to interleave: the test means something
   }
 }
