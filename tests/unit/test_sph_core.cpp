@@ -195,6 +195,48 @@ TEST(NeighborGrid, FluidOnlySearchFindsAllFluid) {
   }
 }
 
+// collect_below (the branch-free search under the markers' fit, the probes and the push-out)
+// gives exactly the fluid within the radius, in the order for_each_candidate_below visits it,
+// periodic axis or not, and again after the fluid has moved a little since the grid was built
+// (it reads the particles' own positions, not the grid's copies).
+TEST(NeighborGrid, CollectBelowGivesTheFluidWithinReachInCandidateOrder) {
+  for (int dim : {2, 3})
+    for (bool periodic : {false, true}) {
+      const double box = 1.0, radius = 0.11;
+      Particles p = random_particles(dim, dim == 2 ? 1500 : 3000, box, 11);
+      const std::size_t fluid = p.size() / 2;  // the rest stand for wall particles
+      PeriodicBox pbox;
+      if (periodic) pbox.periodic[0] = true, pbox.lower[0] = 0.0, pbox.length[0] = box;
+      NeighborGrid grid;
+      grid.build(p, radius, pbox);
+      std::mt19937 rng(9);
+      std::uniform_real_distribution<double> u(-0.1, box + 0.1), nudge(-0.004, 0.004);
+      for (std::size_t j = 0; j < fluid; ++j)  // moved since the build, as within a step
+        for (int a = 0; a < dim; ++a) p.position[a][j] += nudge(rng);
+      std::vector<std::uint32_t> buffer;
+      std::size_t differences = 0, total = 0;
+      for (int q = 0; q < 300; ++q) {
+        const double x[3] = {u(rng), u(rng), dim == 3 ? u(rng) : 0.0};
+        std::vector<std::uint32_t> expected;
+        grid.for_each_candidate_below(x, static_cast<std::uint32_t>(fluid), [&](std::uint32_t j) {
+          double d[3];
+          for (int a = 0; a < 3; ++a) d[a] = x[a] - p.position[a][j];
+          pbox.minimum_image(d);
+          if (d[0] * d[0] + d[1] * d[1] + d[2] * d[2] < radius * radius) expected.push_back(j);
+        });
+        const std::size_t count =
+            grid.collect_below(p, x, static_cast<std::uint32_t>(fluid), radius * radius, buffer);
+        differences += count != expected.size() ||
+                       !std::equal(expected.begin(), expected.end(), buffer.begin());
+        total += count;
+      }
+      std::printf("dim %d, periodic %d: %zu found, %zu searches differ\n", dim, periodic, total,
+                  differences);
+      EXPECT_EQ(differences, 0u);
+      EXPECT_GT(total, 1000u);
+    }
+}
+
 // Retired fluid (left the domain) is in no cell: it has no neighbours and is nobody's, the
 // others keep exactly their brute-force pairs among themselves, and one retired far away does
 // not stretch the grid.
