@@ -145,6 +145,56 @@ TEST(SymmetricProduct, MatchesTheFullRowsAndIsTheSameOnAnyThreadCount) {
   EXPECT_LT(product.product_bytes(), 0.65 * csr_product_bytes(A));
 }
 
+// The PPE's rows as the assembly writes them: the diagonal first, the neighbours in the lists'
+// order (upper and lower columns mixed), and rows of a given pressure that hold their diagonal
+// alone, here the last eight of every block of 1,024 rows and of the matrix. The triangle taken
+// without a branch per entry (build()) must still hold every upper entry in place: the same
+// product as the full rows, on one thread or two (a write past a block's last upper slot would
+// land in the next block's, another thread's).
+TEST(SymmetricProduct, RowsInAnyColumnOrderAndDiagonalOnlyRowsAtTheBlocksEnds) {
+  const int n = 24;
+  const CsrMatrix lattice = stencil_matrix(n, identity_order(n));
+  const auto given = [&](std::size_t i) { return i % 1024 >= 1016 || i + 8 >= lattice.rows; };
+  CsrMatrix A;
+  A.rows = lattice.rows;
+  A.row_start.push_back(0);
+  std::mt19937 random(5);
+  for (std::size_t i = 0; i < lattice.rows; ++i) {
+    std::vector<std::pair<std::int32_t, double>> row;
+    for (std::int64_t k = lattice.row_start[i]; k < lattice.row_start[i + 1]; ++k) {
+      const auto j = static_cast<std::size_t>(lattice.column[k]);
+      if (j == i || (!given(i) && !given(j))) row.emplace_back(lattice.column[k], lattice.value[k]);
+    }
+    const auto diagonal = std::find_if(row.begin(), row.end(), [&](const auto& entry) {
+      return static_cast<std::size_t>(entry.first) == i;
+    });
+    std::iter_swap(row.begin(), diagonal);
+    std::shuffle(row.begin() + 1, row.end(), random);
+    for (const auto& [column, value] : row) {
+      A.column.push_back(column);
+      A.value.push_back(value);
+    }
+    A.row_start.push_back(std::int64_t(A.value.size()));
+  }
+  const std::vector<double> x = wavy(A.rows);
+  std::vector<double> full, one, two;
+  A.multiply(x, full);
+  const int threads = omp_get_max_threads();
+  SymmetricProduct product;
+  omp_set_num_threads(2);
+  ASSERT_TRUE(product.build(A));
+  product.multiply(x, two);
+  omp_set_num_threads(1);
+  product.multiply(x, one);
+  omp_set_num_threads(threads);
+  EXPECT_EQ(product.upper_entries(), (A.nonzeros() - A.rows) / 2);
+  const double error = largest_difference(full, two) / largest_magnitude(full);
+  std::printf("%zu rows, %zu non-zeros, shuffled rows: max |y - y_full| / max |y_full| = %.2e\n",
+              A.rows, A.nonzeros(), error);
+  EXPECT_LT(error, 1e-14);
+  EXPECT_EQ(std::memcmp(one.data(), two.data(), one.size() * sizeof(double)), 0);
+}
+
 // Fewer rows than a block: one block, no buffer beyond it.
 TEST(SymmetricProduct, ASmallMatrixIsOneBlock) {
   const CsrMatrix A = stencil_matrix(6, identity_order(6));
