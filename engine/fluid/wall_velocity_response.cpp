@@ -67,14 +67,12 @@ void fluid_beside_bodies(const SphContext& ctx, const NeighborGrid& grid, const 
   for (std::size_t k = 0; k < count; ++k) {
     const std::uint32_t w = rows[k];
     const double x[3] = {p.position[0][w], p.position[1][w], p.position[2][w]};
-    grid.for_each_candidate_below(x, static_cast<std::uint32_t>(n), [&](std::uint32_t f) {
-      double d[3] = {x[0] - p.position[0][f], x[1] - p.position[1][f], x[2] - p.position[2][f]};
-      if (ctx.periodic.any()) ctx.periodic.minimum_image(d);
-      if (d[0] * d[0] + d[1] * d[1] + d[2] * d[2] < r2max) {
-        std::atomic_ref<std::uint8_t> marked(mark[f]);
-        if (!marked.load(std::memory_order_relaxed)) marked.store(1, std::memory_order_relaxed);
-      }
-    });
+    thread_local std::vector<std::uint32_t> found;
+    const std::size_t near = grid.collect_below(p, x, static_cast<std::uint32_t>(n), r2max, found);
+    for (std::size_t m = 0; m < near; ++m) {
+      std::atomic_ref<std::uint8_t> marked(mark[found[m]]);
+      if (!marked.load(std::memory_order_relaxed)) marked.store(1, std::memory_order_relaxed);
+    }
   }
   rows.clear();
   for (std::size_t i = 0; i < n; ++i)

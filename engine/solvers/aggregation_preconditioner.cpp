@@ -306,7 +306,7 @@ class AggregationPreconditioner final : public Preconditioner {
   std::vector<double> values_;
   Eigen::SparseMatrix<double> coarse_;
   CholeskyFactorSolve::Factor coarse_factor_;
-  CholeskyFactorSolve coarse_solve_;  // the factor's solves, its bits, its chains interleaved
+  CholeskyFactorSolve coarse_solve_;  // the factor's solves, their chains interleaved
   Eigen::VectorXd coarse_rhs_, coarse_solution_;
 };
 
