@@ -19,6 +19,11 @@ namespace washout {
 std::size_t mark_active_boundary(const NeighborList& list, const Particles& p,
                                  std::vector<std::uint8_t>& active);
 
+// The same marks at the particles' current positions, from a grid built on them (the lists are
+// the step's: the fluid has moved since): the boundary particles closer than 2h to some fluid.
+void mark_boundary_near_fluid(const SphContext& ctx, const NeighborGrid& grid, const Particles& p,
+                              std::vector<std::uint8_t>& active);
+
 void update_marker_velocities(const SphContext& ctx, const NeighborGrid& grid, const Particles& p,
                               const std::vector<std::uint8_t>& active, const WallConditions& walls,
                               BoundaryWork& work);

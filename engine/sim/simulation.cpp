@@ -568,24 +568,8 @@ void Simulation::evaluate_probes() {
 
 void Simulation::update_boundary_pressures() {
   grid_.build(particles_, 2.0 * ctx_.h, ctx_.periodic);
-  // Which boundary particles see fluid: recompute from the grid around each one.
-  const std::size_t n = particles_.size();
-  active_boundary_.assign(n, 0);
-  const double r2max = 4.0 * ctx_.h * ctx_.h;
-  const auto fluid = static_cast<std::uint32_t>(particles_.fluid_count);
-#pragma omp parallel for schedule(dynamic, 512)
-  for (std::size_t w = particles_.fluid_count; w < n; ++w) {
-    const double x[3] = {particles_.position[0][w], particles_.position[1][w],
-                         particles_.position[2][w]};
-    bool sees = false;
-    grid_.for_each_candidate_below(x, fluid, [&](std::uint32_t f) {
-      if (sees) return;
-      double d[3];
-      ctx_.displacement(particles_, w, f, d);
-      sees = d[0] * d[0] + d[1] * d[1] + d[2] * d[2] < r2max;
-    });
-    active_boundary_[w] = sees;
-  }
+  // Which boundary particles see fluid, at the positions the step left.
+  mark_boundary_near_fluid(ctx_, grid_, particles_, active_boundary_);
   update_wall_pressures(ctx_, grid_, model_.params.gravity, active_boundary_, particles_);
 }
 
