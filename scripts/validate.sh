@@ -41,6 +41,7 @@ cases=(
   "dambreak_2d|2|scenes/dambreak_2d.lua|Martin & Moyce n^2 = 2 front, a = 0.146 m, T <= 3 (tabulated experiment)|0.0146,0.0073|0.0146,0.0073,0.00365|"
   "dambreak_3d|3|scenes/dambreak_3d.lua|Martin & Moyce n^2 = 2 front in a tank a/2 wide, T <= 3|0.0146|0.0146,0.0073|"
   "lobovsky_2d|2|scenes/validation/lobovsky_2d.lua|Lobovsky et al. 2014, H = 0.3 m (experiment: front, gauges H1-H4, sensor 1)||0.01,0.0075,0.005|"
+  "spheric_test2_3d|3|scenes/validation/spheric_test2_3d.lua|SPHERIC Test 2, Kleefsman et al. 2005: a 3D dam break against a box (experiment: arrivals, gauges H1-H4, pressures P1-P4 on the box)||0.05,0.025|"
   "poiseuille_2d|2|scenes/poiseuille_2d.lua|plane Poiseuille start-up, series solution (L/d0 >= 20: the periodic length needs 3 kernel supports)|0.005|0.005,0.0033333333,0.0025|"
   "floating_box_2d|2|scenes/floating_box_2d.lua|box of density 500 released at draft 0.03 m, Archimedes D = 0.05 m, t <= 1.5 s|0.01|0.01,0.005|end_time=1.5"
 )

@@ -1,0 +1,51 @@
+#pragma once
+// When the water of SPHERIC Test 2 (scenes/validation/spheric_test2_3d.lua) reaches its gauges,
+// in a run and in the experiment: the first time the level at H3 and H2 exceeds 2 cm and the
+// pressure at P1, on the box's face, exceeds 0.2 rho g H (H = 0.55 m), between the two samples
+// that cross it. Recomputed here from the probes, independently of the scene's `arrival` score.
+#include <cmath>
+#include <string>
+#include <vector>
+
+#include "support/scene_runner.hpp"
+
+namespace washout::testing {
+
+struct SphericArrival {
+  const char* gauge;   // the probe, and the CSV's column prefix
+  const char* column;  // the CSV's column
+  double level;        // m or Pa
+};
+
+inline std::vector<SphericArrival> spheric_arrivals() {
+  const double rho_g_H = 1000.0 * 9.81 * 0.55;
+  return {{"H3", "H3_m", 0.02}, {"H2", "H2_m", 0.02}, {"P1", "P1_Pa", 0.2 * rho_g_H}};
+}
+
+// The first crossing of `level` after t = 0.01 s (the sensors' zero offsets are below every
+// level); NaN when the series never crosses it.
+inline double first_crossing(const std::vector<double>& t, const std::vector<double>& v,
+                             double level) {
+  for (std::size_t k = 1; k < t.size(); ++k)
+    if (t[k] >= 0.01 && v[k] > level)
+      return t[k - 1] + (t[k] - t[k - 1]) * (level - v[k - 1]) / (v[k] - v[k - 1]);
+  return std::nan("");
+}
+
+inline double measured_arrival(const SphericArrival& a) {
+  const auto csv = read_csv(refdata("spheric_test2_kleefsman2005.csv"));
+  std::vector<double> t, v;
+  for (std::size_t k = 0; k < csv.at("t_s").size(); ++k) {
+    t.push_back(std::stod(csv.at("t_s")[k]));
+    v.push_back(std::stod(csv.at(a.column)[k]));
+  }
+  return first_crossing(t, v, a.level);
+}
+
+inline double run_arrival(io::RunFileReader& run, const SphericArrival& a) {
+  const std::string probe = std::string("/probes/") + a.gauge;
+  return first_crossing(run.read_doubles(probe + "/time"), run.read_doubles(probe + "/value"),
+                        a.level);
+}
+
+}  // namespace washout::testing
