@@ -43,9 +43,11 @@ local L, H, X = P.column_length, P.column_height, P.tank_length
 washout.fluid { washout.box { min = { 0, 0 }, max = { L, H } } }
 washout.wall { tank.open_box(P, { min = { 0, 0 }, max = { X, P.tank_height } }), name = "tank" }
 washout.probe { name = "front", quantity = "front", axis = "x" }
-local gauges = { H1 = 0.300, H2 = 0.865, H3 = 1.114, H4 = 1.3625 }
-for name, x in pairs(gauges) do
-  washout.probe { name = name, quantity = "water_height", at = { x, 0 } }
+-- In a list: pairs() over names would make the probes (and the checkpoint's order of their
+-- values) in an order that changes from run to run.
+local gauges = { { "H1", 0.300 }, { "H2", 0.865 }, { "H3", 1.114 }, { "H4", 1.3625 } }
+for _, gauge in ipairs(gauges) do
+  washout.probe { name = gauge[1], quantity = "water_height", at = { gauge[2], 0 } }
 end
 washout.probe { name = "sensor1", quantity = "pressure", at = { X, 0.003 } }
 

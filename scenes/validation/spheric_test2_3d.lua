@@ -55,9 +55,11 @@ washout.wall { washout.box { min = { P.box_from, 0.5 * (Y - P.box_width), 0 },
                              max = { face, 0.5 * (Y + P.box_width), P.box_height } },
                name = "box" }
 
-local gauges = { H1 = 0.496, H2 = 0.992, H3 = 1.488, H4 = 2.638 }
-for name, x in pairs(gauges) do
-  washout.probe { name = name, quantity = "water_height", at = { x, 0.5 * Y, 0 } }
+-- In a list, not a table keyed by name: pairs() visits those in an order that changes from run
+-- to run, and the checkpoint stores the probes in the order they were made.
+local gauges = { { "H1", 0.496 }, { "H2", 0.992 }, { "H3", 1.488 }, { "H4", 2.638 } }
+for _, gauge in ipairs(gauges) do
+  washout.probe { name = gauge[1], quantity = "water_height", at = { gauge[2], 0.5 * Y, 0 } }
 end
 for k, z in ipairs({ 0.021, 0.061, 0.101, 0.141 }) do
   washout.probe { name = "P" .. k, quantity = "pressure", at = { face, 0.5 * Y, z } }
