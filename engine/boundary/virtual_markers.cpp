@@ -1,27 +1,25 @@
 #include "engine/boundary/virtual_markers.hpp"
 
 #include <algorithm>
-#include <atomic>
 #include <cmath>
 
 #include "engine/core/fluid_interpolation.hpp"
+#include "engine/core/shared_mark.hpp"
 
 namespace washout {
 
 std::size_t mark_active_boundary(const NeighborList& list, const Particles& p,
                                  std::vector<std::uint8_t>& active) {
   active.assign(p.size(), 0);
-  // One pass over every fluid pair: on all threads (serial it was about 1 % of a step). Threads
-  // that meet the same wall particle all write the same 1, through an atomic reference so that
-  // the writes are defined; reading first leaves a line that is already marked unshared.
+  // One pass over every fluid pair: on all threads (serial it was about 1 % of a step); threads
+  // that meet the same wall particle all mark it.
   const std::size_t queries = list.size();
 #pragma omp parallel for schedule(static)
   for (std::size_t i = 0; i < queries; ++i)
     for (std::uint64_t k = list.offset[i]; k < list.offset[i + 1]; ++k) {
       const std::uint32_t j = list.index[k];
       if (j < p.fluid_count) continue;
-      std::atomic_ref<std::uint8_t> mark(active[j]);
-      if (!mark.load(std::memory_order_relaxed)) mark.store(1, std::memory_order_relaxed);
+      mark_shared(active[j]);
     }
   std::size_t count = 0;
 #pragma omp parallel for schedule(static) reduction(+ : count)
@@ -36,8 +34,7 @@ void mark_boundary_near_fluid(const SphContext& ctx, const NeighborGrid& grid, c
   const std::size_t fluid = p.fluid_count;
   // Walked from the fluid: the walls outnumber it (7 to 1 in the 3D dam break) and most of them
   // are dry, each a walk of 125 cells that found nothing (2 % of the a/20 run, at the frames
-  // alone). The distance is the wall's to the fluid, as a walk from the wall takes it; the marks
-  // are written as mark_active_boundary writes them.
+  // alone). The distance is the wall's to the fluid, as a walk from the wall takes it.
 #pragma omp parallel for schedule(static)
   for (std::size_t f = 0; f < fluid; ++f) {
     if (p.retired(f)) continue;  // in no cell: no wall finds it
@@ -46,9 +43,7 @@ void mark_boundary_near_fluid(const SphContext& ctx, const NeighborGrid& grid, c
       if (w < fluid) return;
       double d[3];
       ctx.displacement(p, w, f, d);
-      if (d[0] * d[0] + d[1] * d[1] + d[2] * d[2] >= r2max) return;
-      std::atomic_ref<std::uint8_t> mark(active[w]);
-      if (!mark.load(std::memory_order_relaxed)) mark.store(1, std::memory_order_relaxed);
+      if (d[0] * d[0] + d[1] * d[1] + d[2] * d[2] < r2max) mark_shared(active[w]);
     });
   }
 }

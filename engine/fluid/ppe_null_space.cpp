@@ -6,11 +6,11 @@
 #include <omp.h>
 
 #include <algorithm>
-#include <atomic>
 #include <numeric>
 #include <utility>
 #include <vector>
 
+#include "engine/core/shared_mark.hpp"
 #include "engine/fluid/pressure_poisson_parts.hpp"
 
 namespace washout {
@@ -113,14 +113,11 @@ std::size_t fix_free_pressure_levels(const std::vector<std::uint8_t>& anchored_r
 #pragma omp parallel for schedule(static)
   for (std::size_t r = 0; r < rows; ++r) root_of[r] = components.root(static_cast<std::int32_t>(r));
 
-  // A region is anchored if any of its rows is. Threads that mark the same root all write 1,
-  // through an atomic reference; reading first leaves a marked root's line unshared.
+  // A region is anchored if any of its rows is (threads may mark the same root).
   std::vector<std::uint8_t> anchored(rows, 0);
 #pragma omp parallel for schedule(static)
   for (std::size_t r = 0; r < rows; ++r) {
-    if (!anchored_row[r]) continue;
-    std::atomic_ref<std::uint8_t> mark(anchored[root_of[r]]);
-    if (!mark.load(std::memory_order_relaxed)) mark.store(1, std::memory_order_relaxed);
+    if (anchored_row[r]) mark_shared(anchored[root_of[r]]);
   }
   // Most steps have a free surface in every region: then nothing is left to fix.
   std::size_t free_regions = 0;

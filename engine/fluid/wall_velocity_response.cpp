@@ -1,8 +1,9 @@
 #include "engine/fluid/wall_velocity_response.hpp"
 
 #include <Eigen/Geometry>
-#include <atomic>
 #include <cmath>
+
+#include "engine/core/shared_mark.hpp"
 
 namespace washout {
 
@@ -60,8 +61,7 @@ void fluid_beside_bodies(const SphContext& ctx, const NeighborGrid& grid, const 
     if (b >= 0 && first_column[b] >= 0) rows.push_back(static_cast<std::uint32_t>(w));
   }
   // The searches around them on all threads (serial they were 0.5 s of the README wash-out);
-  // threads that find the same fluid particle all write the same 1, through an atomic
-  // reference so that the writes are defined.
+  // threads may find the same fluid particle.
   const std::size_t count = rows.size();
 #pragma omp parallel for schedule(static)
   for (std::size_t k = 0; k < count; ++k) {
@@ -69,10 +69,7 @@ void fluid_beside_bodies(const SphContext& ctx, const NeighborGrid& grid, const 
     const double x[3] = {p.position[0][w], p.position[1][w], p.position[2][w]};
     thread_local std::vector<std::uint32_t> found;
     const std::size_t near = grid.collect_below(p, x, static_cast<std::uint32_t>(n), r2max, found);
-    for (std::size_t m = 0; m < near; ++m) {
-      std::atomic_ref<std::uint8_t> marked(mark[found[m]]);
-      if (!marked.load(std::memory_order_relaxed)) marked.store(1, std::memory_order_relaxed);
-    }
+    for (std::size_t m = 0; m < near; ++m) mark_shared(mark[found[m]]);
   }
   rows.clear();
   for (std::size_t i = 0; i < n; ++i)
