@@ -100,12 +100,12 @@ washout.validation {
   end,
 }
 
--- The measured series every 10th sample (100 Hz) within the run's window.
-local function decimated(column)
+-- A measured series every 10th sample (100 Hz) within the run's window, divided by `scale`.
+local function decimated(column, scale)
   local x, y = {}, {}
   for k = 1, #measured.t_s, 10 do
     if measured.t_s[k] <= window then
-      x[#x + 1], y[#y + 1] = measured.t_s[k], measured[column][k]
+      x[#x + 1], y[#y + 1] = measured.t_s[k], measured[column][k] / scale
     end
   end
   return { x = x, y = y }
@@ -113,14 +113,9 @@ end
 local levels = {}
 for _, name in ipairs({ "H1", "H2", "H3", "H4" }) do
   levels[#levels + 1] = {
-    probe = name, reference = decimated(name .. "_m"),
+    probe = name, reference = decimated(name .. "_m", H),
     transform = function(t, h) return t, h / H end,
   }
-end
--- The reference's heights are in metres: the transform scales the run's; the measured ones are
--- scaled here.
-for _, piece in ipairs(levels) do
-  for k = 1, #piece.reference.y do piece.reference.y[k] = piece.reference.y[k] / H end
 end
 washout.validation {
   name = "water_levels",

@@ -20,8 +20,10 @@ std::vector<double> lags(const char* d0, const char* name) {
   std::vector<double> result;
   if (out.exit_code != 0) return result;
   io::RunFileReader run(out.h5_path);
-  for (const auto& a : testing::spheric_arrivals())
-    result.push_back(testing::run_arrival(run, a) - testing::measured_arrival(a));
+  const auto arrivals = testing::spheric_arrivals();
+  const auto measured = testing::measured_arrivals();
+  for (std::size_t k = 0; k < arrivals.size(); ++k)
+    result.push_back(testing::run_arrival(run, arrivals[k]) - measured[k]);
   return result;
 }
 

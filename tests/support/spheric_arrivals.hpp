@@ -32,14 +32,18 @@ inline double first_crossing(const std::vector<double>& t, const std::vector<dou
   return std::nan("");
 }
 
-inline double measured_arrival(const SphericArrival& a) {
+// The experiment's arrivals, in spheric_arrivals()' order (the file read once).
+inline std::vector<double> measured_arrivals() {
   const auto csv = read_csv(refdata("spheric_test2_kleefsman2005.csv"));
-  std::vector<double> t, v;
-  for (std::size_t k = 0; k < csv.at("t_s").size(); ++k) {
-    t.push_back(std::stod(csv.at("t_s")[k]));
-    v.push_back(std::stod(csv.at(a.column)[k]));
+  std::vector<double> t;
+  for (const auto& cell : csv.at("t_s")) t.push_back(std::stod(cell));
+  std::vector<double> arrivals;
+  for (const auto& a : spheric_arrivals()) {
+    std::vector<double> v;
+    for (const auto& cell : csv.at(a.column)) v.push_back(std::stod(cell));
+    arrivals.push_back(first_crossing(t, v, a.level));
   }
-  return first_crossing(t, v, a.level);
+  return arrivals;
 }
 
 inline double run_arrival(io::RunFileReader& run, const SphericArrival& a) {
