@@ -2,7 +2,8 @@
 // Cubic B-spline kernel (Monaghan 1985), compact support 2h, METHOD.md "SPH operators".
 //   W(q) = sigma (1 - 1.5 q^2 + 0.75 q^3)   0 <= q < 1
 //        = sigma 0.25 (2 - q)^3               1 <= q < 2,    q = r / h
-//   sigma = 10 / (7 pi h^2) in 2D, 1 / (pi h^3) in 3D.
+//   sigma = 10 / (7 pi h^2) in 2D, 1 / (pi h^3) in 3D (2 / (3 h) in 1D: a wave gauge's
+//   weights across the flow of a 2D scene, engine/sim/probes.cpp).
 #include <numbers>
 
 namespace washout {
@@ -12,8 +13,9 @@ class CubicSplineKernel {
   CubicSplineKernel(int dim, double h)
       : h_(h),
         inv_h_(1.0 / h),
-        sigma_(dim == 2 ? 10.0 / (7.0 * std::numbers::pi * h * h)
-                        : 1.0 / (std::numbers::pi * h * h * h)) {}
+        sigma_(dim == 1   ? 2.0 / (3.0 * h)
+               : dim == 2 ? 10.0 / (7.0 * std::numbers::pi * h * h)
+                          : 1.0 / (std::numbers::pi * h * h * h)) {}
 
   double h() const { return h_; }
   double support() const { return 2.0 * h_; }

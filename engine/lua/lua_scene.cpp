@@ -494,7 +494,7 @@ int l_moving_wall(lua_State* L) { return add_wall(L, true); }
 
 int l_probe(lua_State* L) {
   luaL_checktype(L, 1, LUA_TTABLE);
-  check_keys(L, 1, "washout.probe", {"name", "quantity", "at", "axis"});
+  check_keys(L, 1, "washout.probe", {"name", "quantity", "at", "axis", "facing", "reads"});
   auto* b = binding(L);
   b->ensure_resolved(L);
   ProbeSpec p;
@@ -524,6 +524,36 @@ int l_probe(lua_State* L) {
       fail(L, " washout.probe: axis must be x, y or z");
     p.axis = axis[0] - 'x';
   }
+  lua_getfield(L, 1, "reads");
+  if (!lua_isnil(L, -1)) {
+    if (p.quantity != ProbeSpec::Quantity::WaterHeight)
+      fail(L,
+           " washout.probe: 'reads' (what a wave gauge measures) is for a water_height probe "
+           "only");
+    const std::string reads = read_string(L, 1, "reads", "surface");
+    if (reads == "surface")
+      p.gauge = ProbeSpec::Gauge::Surface;
+    else if (reads == "wetted_length")
+      p.gauge = ProbeSpec::Gauge::WettedLength;
+    else
+      fail(L,
+           " washout.probe: reads must be \"surface\" (the top of the water standing on the "
+           "bed) or \"wetted_length\" (the length of the gauge's line under water), got \"" +
+               reads + "\"");
+  }
+  lua_pop(L, 1);
+  lua_getfield(L, 1, "facing");
+  if (!lua_isnil(L, -1)) {
+    if (p.quantity != ProbeSpec::Quantity::Pressure)
+      fail(L, " washout.probe: 'facing' (the sensor face's normal) is for a pressure probe only");
+    const Vec3 facing = read_vector(L, -1, "probe 'facing'", b->dim());
+    if (!(facing.norm() > 0.0) || !std::isfinite(facing.norm()))
+      fail(L,
+           " washout.probe: 'facing' must be a nonzero vector (the sensor face's normal, "
+           "pointing into the fluid)");
+    p.facing = facing.normalized();
+  }
+  lua_pop(L, 1);
   b->scene->model().probes.push_back(p);
   return 0;
 }

@@ -92,8 +92,15 @@ struct ProbeSpec {
   enum class Quantity { Pressure, WaterHeight, Front };
   std::string name;
   Quantity quantity = Quantity::Pressure;
-  Vec3 point = Vec3::Zero();  // Pressure: where; WaterHeight: (x[, y]) and bed elevation
-  int axis = 0;               // Front: the axis along which the front advances
+  Vec3 point = Vec3::Zero();   // Pressure: where; WaterHeight: (x[, y]) and bed elevation
+  int axis = 0;                // Front: the axis along which the front advances
+  Vec3 facing = Vec3::Zero();  // Pressure: the sensor face's unit normal, into the fluid; zero:
+                               // the fluid on every side counts
+  // WaterHeight: what the gauge reads, the top of the water standing on the bed (a camera, a
+  // gauge read by eye) or the length of its vertical line under water (a resistance or
+  // capacitance wire).
+  enum class Gauge { Surface, WettedLength };
+  Gauge gauge = Gauge::Surface;
   SourceLocation where;
 };
 

@@ -15,6 +15,7 @@
 #include "engine/fluid/density_relaxation.hpp"
 #include "engine/fluid/isph_stages.hpp"
 #include "engine/sim/particle_builder.hpp"
+#include "engine/sim/probes.hpp"
 #include "engine/sim/rigid_body_system.hpp"
 
 namespace washout {
@@ -527,42 +528,19 @@ const MovingWall* Simulation::motion_of_wall(std::size_t w) const {
 
 void Simulation::evaluate_probes() {
   const auto& prm = model_.params;
-  const std::size_t n = particles_.fluid_count;
-  const int up = vertical_axis(prm);
   for (std::size_t k = 0; k < model_.probes.size(); ++k) {
     const auto& probe = model_.probes[k];
-    double value = 0.0;
-    if (probe.quantity == ProbeSpec::Quantity::Pressure) {
-      const double m[3] = {probe.point[0], probe.point[1], probe.point[2]};
-      double sum = 0.0;
-      // The grid was built at the start of the step; particles moved by at most cfl*h since.
-      const double fraction = accumulate_fluid_at(
-          ctx_, grid_, particles_, m,
-          [&](std::uint32_t f, double w) { sum += w * particles_.pressure[f]; });
-      value = fraction < kDryFluidFraction ? 0.0 : sum * ctx_.volume / fraction;
-    } else if (probe.quantity == ProbeSpec::Quantity::WaterHeight) {
-      double top = -std::numeric_limits<double>::max();
-#pragma omp parallel for reduction(max : top)
-      for (std::size_t i = 0; i < n; ++i) {
-        bool in_column = particles_.kind[i] == static_cast<std::uint8_t>(ParticleKind::Fluid);
-        for (int a = 0; a < prm.dim; ++a)
-          if (a != up && std::abs(particles_.position[a][i] - probe.point[a]) > ctx_.d0)
-            in_column = false;
-        if (in_column) top = std::max(top, particles_.position[up][i]);
-      }
-      value = std::max(0.0, top + 0.5 * ctx_.d0 - probe.point[up]);
-    } else {
-      // The front: the furthest fluid particle along the axis that is part of the bulk
-      // (summation density above half of rho0), so that lone spray does not count.
-      double front = -std::numeric_limits<double>::max();
-#pragma omp parallel for reduction(max : front)
-      for (std::size_t i = 0; i < n; ++i)
-        if (particles_.density[i] > 0.5 * prm.rho0 &&
-            particles_.kind[i] == static_cast<std::uint8_t>(ParticleKind::Fluid))
-          front = std::max(front, particles_.position[probe.axis][i]);
-      value = front + 0.5 * ctx_.d0;
+    switch (probe.quantity) {
+      case ProbeSpec::Quantity::Pressure:
+        probe_values_[k] = sensor_pressure(ctx_, grid_, particles_, probe);
+        break;
+      case ProbeSpec::Quantity::WaterHeight:
+        probe_values_[k] = water_height(ctx_, particles_, vertical_axis(prm), probe);
+        break;
+      case ProbeSpec::Quantity::Front:
+        probe_values_[k] = front_position(ctx_, particles_, prm.rho0, probe);
+        break;
     }
-    probe_values_[k] = value;
   }
 }
 

@@ -12,7 +12,8 @@
 --                 first above 2 cm) and at P1 (p* first above 0.2). Where the front is made by
 --                 the release, as in Martin & Moyce's dam break (docs/method.md): a door pulled
 --                 up fast, as Lobovsky's gate.
---   water_levels  RMS of h/H at H1-H4 against the measured series, t <= 1.5 s;
+--   water_levels  RMS of h/H at H1-H4 against the measured series, t <= 1.5 s, each gauge
+--                 reading the length of its wire under water;
 --   box_pressure  RMS over P1-P4 of the time mean of p* over 0.6-1.5 s (the water piled
 --                 against the face after the impact) minus the measured one;
 --   impact_peak   abs(peak p* at P1 - measured peak) / measured peak, 0.3-0.8 s. Reported,
@@ -57,14 +58,21 @@ washout.wall { washout.box { min = { P.box_from, 0.5 * (Y - P.box_width), 0 },
 
 -- In a list, not a table keyed by name: pairs() visits those in an order that changes from run
 -- to run, and the checkpoint stores the probes in the order they were made.
+-- The gauges read the length of their wire under water (reads = "wetted_length"): behind the
+-- box H1 read 0.05-0.2 m while the jet thrown over the box passed it with its top near 0.4 m and
+-- nothing standing on the floor under it yet (docs/method.md, thirty-ninth session).
 local gauges = { { "H1", 0.496 }, { "H2", 0.992 }, { "H3", 1.488 }, { "H4", 2.638 } }
 for _, gauge in ipairs(gauges) do
-  washout.probe { name = gauge[1], quantity = "water_height", at = { gauge[2], 0.5 * Y, 0 } }
+  washout.probe { name = gauge[1], quantity = "water_height", at = { gauge[2], 0.5 * Y, 0 },
+                  reads = "wetted_length" }
 end
+-- Each sensor sees the fluid in front of its face only: P4 is 0.02 m under the top edge and P5
+-- 0.021 m behind the face's, within the support (2h) of the water on the other face.
 for k, z in ipairs({ 0.021, 0.061, 0.101, 0.141 }) do
-  washout.probe { name = "P" .. k, quantity = "pressure", at = { face, 0.5 * Y, z } }
+  washout.probe { name = "P" .. k, quantity = "pressure", at = { face, 0.5 * Y, z },
+                  facing = { 1, 0, 0 } }
   washout.probe { name = "P" .. (k + 4), quantity = "pressure",
-                  at = { face - z, 0.5 * Y, P.box_height } }
+                  at = { face - z, 0.5 * Y, P.box_height }, facing = { 0, 0, 1 } }
 end
 
 local g = validation.g(P)
@@ -119,9 +127,9 @@ for _, name in ipairs({ "H1", "H2", "H3", "H4" }) do
 end
 washout.validation {
   name = "water_levels",
-  metric = "RMS of h/H at H1-H4 against the measured series, t <= 1.5 s",
+  metric = "RMS of h/H at H1-H4 (wetted length) against the measured series, t <= 1.5 s",
   reference = reference,
-  bound = 0.15,
+  bound = 0.1,
   error = validation.pooled_rms(levels),
 }
 

@@ -16,16 +16,17 @@
 namespace washout {
 namespace {
 
-// The kernel integrates to one: a fine quadrature of W over its support (2D rings, 3D shells).
-TEST(Kernel, NormalisedIn2dAnd3d) {
-  for (int dim : {2, 3}) {
+// The kernel integrates to one: a fine quadrature of W over its support (1D segments, 2D rings,
+// 3D shells).
+TEST(Kernel, NormalisedIn1d2dAnd3d) {
+  for (int dim : {1, 2, 3}) {
     const CubicSplineKernel W(dim, 0.7);
     double integral = 0.0;
     const int steps = 20000;
     const double dr = 2.0 * 0.7 / steps;
     for (int k = 0; k < steps; ++k) {
       const double r = (k + 0.5) * dr;
-      integral += W.value(r) * (dim == 2 ? 2 * M_PI * r : 4 * M_PI * r * r) * dr;
+      integral += W.value(r) * (dim == 1 ? 2.0 : dim == 2 ? 2 * M_PI * r : 4 * M_PI * r * r) * dr;
     }
     std::printf("dim %d: integral of W = %.8f\n", dim, integral);
     EXPECT_NEAR(integral, 1.0, 1e-6);  // quadrature error of the midpoint rule at this step
