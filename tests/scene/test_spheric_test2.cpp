@@ -1,8 +1,8 @@
 // SPHERIC Test 2 (Kleefsman et al. 2005), a 3D dam break against a box, at its coarsest spacing
 // (d0 = H/11, scenes/validation/spheric_test2_3d.lua). The water must reach the gauges in the
 // experiment's order, H3, then H2, then the box's face (P1), each later than in the experiment
-// by less than a bound: at coarse spacings the front lags (108, 168 and 213 ms at d0 = 0.05 m,
-// 49, 71 and 101 ms at 0.025 m: about first order, tests/scene/long_spheric_test2.cpp), and a
+// by less than a bound: at coarse spacings the front lags (109, 171 and 213 ms at d0 = 0.05 m,
+// 52, 74 and 101 ms at 0.025 m: about first order, tests/scene/long_spheric_test2.cpp), and a
 // release that runs ahead or stalls would show here. The scene's own `arrival` score must be
 // the same arrivals' RMS in tau = t sqrt(g/H).
 #include <gtest/gtest.h>

@@ -2,7 +2,9 @@
 // When the water of SPHERIC Test 2 (scenes/validation/spheric_test2_3d.lua) reaches its gauges,
 // in a run and in the experiment: the first time the level at H3 and H2 exceeds 2 cm and the
 // pressure at P1, on the box's face, exceeds 0.2 rho g H (H = 0.55 m), between the two samples
-// that cross it. Recomputed here from the probes, independently of the scene's `arrival` score.
+// that cross it. Recomputed here from the probes, independently of the scene's `arrival` score;
+// so is each gauge's agreement with the measured level (gauge_rms).
+#include <algorithm>
 #include <cmath>
 #include <string>
 #include <vector>
@@ -50,6 +52,29 @@ inline double run_arrival(io::RunFileReader& run, const SphericArrival& a) {
   const std::string probe = std::string("/probes/") + a.gauge;
   return first_crossing(run.read_doubles(probe + "/time"), run.read_doubles(probe + "/value"),
                         a.level);
+}
+
+// RMS of (h_run - h_measured) / H at a gauge over the experiment's samples up to t_end, the run's
+// level interpolated linearly at the experiment's times (H = 0.55 m).
+inline double gauge_rms(io::RunFileReader& run, const char* gauge, double t_end) {
+  const auto csv = read_csv(refdata("spheric_test2_kleefsman2005.csv"));
+  const std::string probe = std::string("/probes/") + gauge;
+  const auto t_run = run.read_doubles(probe + "/time");
+  const auto h_run = run.read_doubles(probe + "/value");
+  const auto& t_cells = csv.at("t_s");
+  const auto& h_cells = csv.at(std::string(gauge) + "_m");
+  double sum2 = 0.0;
+  std::size_t count = 0, r = 1;
+  for (std::size_t k = 0; k < t_cells.size(); ++k) {
+    const double t = std::stod(t_cells[k]);
+    if (t > t_end || t > t_run.back()) break;
+    while (r + 1 < t_run.size() && t_run[r] < t) ++r;
+    const double w = (t - t_run[r - 1]) / (t_run[r] - t_run[r - 1]);
+    const double h = h_run[r - 1] + std::clamp(w, 0.0, 1.0) * (h_run[r] - h_run[r - 1]);
+    sum2 += std::pow((h - std::stod(h_cells[k])) / 0.55, 2);
+    ++count;
+  }
+  return count ? std::sqrt(sum2 / count) : std::nan("");
 }
 
 }  // namespace washout::testing
