@@ -34,8 +34,7 @@ SphericRun run_at(const char* d0) {
   const auto measured = testing::measured_arrivals();
   for (std::size_t k = 0; k < arrivals.size(); ++k)
     result.lags.push_back(testing::run_arrival(run, arrivals[k]) - measured[k]);
-  for (const char* gauge : {"H1", "H2", "H3", "H4"})
-    result.gauges.push_back(testing::gauge_rms(run, gauge, 1.5));
+  result.gauges = testing::gauges_rms(run, 1.5);
   return result;
 }
 

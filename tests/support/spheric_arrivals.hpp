@@ -3,7 +3,7 @@
 // in a run and in the experiment: the first time the level at H3 and H2 exceeds 2 cm and the
 // pressure at P1, on the box's face, exceeds 0.2 rho g H (H = 0.55 m), between the two samples
 // that cross it. Recomputed here from the probes, independently of the scene's `arrival` score;
-// so is each gauge's agreement with the measured level (gauge_rms).
+// so is each gauge's agreement with the measured level (gauges_rms).
 #include <algorithm>
 #include <cmath>
 #include <string>
@@ -54,27 +54,33 @@ inline double run_arrival(io::RunFileReader& run, const SphericArrival& a) {
                         a.level);
 }
 
-// RMS of (h_run - h_measured) / H at a gauge over the experiment's samples up to t_end, the run's
-// level interpolated linearly at the experiment's times (H = 0.55 m).
-inline double gauge_rms(io::RunFileReader& run, const char* gauge, double t_end) {
+// RMS of (h_run - h_measured) / H at H1-H4 (in that order) over the experiment's samples up to
+// t_end, the run's level interpolated linearly at the experiment's times (H = 0.55 m; the file
+// read once for the four).
+inline std::vector<double> gauges_rms(io::RunFileReader& run, double t_end) {
   const auto csv = read_csv(refdata("spheric_test2_kleefsman2005.csv"));
-  const std::string probe = std::string("/probes/") + gauge;
-  const auto t_run = run.read_doubles(probe + "/time");
-  const auto h_run = run.read_doubles(probe + "/value");
-  const auto& t_cells = csv.at("t_s");
-  const auto& h_cells = csv.at(std::string(gauge) + "_m");
-  double sum2 = 0.0;
-  std::size_t count = 0, r = 1;
-  for (std::size_t k = 0; k < t_cells.size(); ++k) {
-    const double t = std::stod(t_cells[k]);
-    if (t > t_end || t > t_run.back()) break;
-    while (r + 1 < t_run.size() && t_run[r] < t) ++r;
-    const double w = (t - t_run[r - 1]) / (t_run[r] - t_run[r - 1]);
-    const double h = h_run[r - 1] + std::clamp(w, 0.0, 1.0) * (h_run[r] - h_run[r - 1]);
-    sum2 += std::pow((h - std::stod(h_cells[k])) / 0.55, 2);
-    ++count;
+  std::vector<double> t_seen;
+  for (const auto& cell : csv.at("t_s")) t_seen.push_back(std::stod(cell));
+  std::vector<double> result;
+  for (const char* gauge : {"H1", "H2", "H3", "H4"}) {
+    const std::string probe = std::string("/probes/") + gauge;
+    const auto t_run = run.read_doubles(probe + "/time");
+    const auto h_run = run.read_doubles(probe + "/value");
+    const auto& h_cells = csv.at(std::string(gauge) + "_m");
+    double sum2 = 0.0;
+    std::size_t count = 0, r = 1;
+    for (std::size_t k = 0; k < t_seen.size(); ++k) {
+      const double t = t_seen[k];
+      if (t > t_end || t > t_run.back()) break;
+      while (r + 1 < t_run.size() && t_run[r] < t) ++r;
+      const double w = (t - t_run[r - 1]) / (t_run[r] - t_run[r - 1]);
+      const double h = h_run[r - 1] + std::clamp(w, 0.0, 1.0) * (h_run[r] - h_run[r - 1]);
+      sum2 += std::pow((h - std::stod(h_cells[k])) / 0.55, 2);
+      ++count;
+    }
+    result.push_back(count ? std::sqrt(sum2 / count) : std::nan(""));
   }
-  return count ? std::sqrt(sum2 / count) : std::nan("");
+  return result;
 }
 
 }  // namespace washout::testing
