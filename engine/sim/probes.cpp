@@ -33,8 +33,11 @@ double sensor_pressure(const SphContext& ctx, const NeighborGrid& grid, const Pa
   // The grid was built at the start of the step; particles moved by at most cfl*h since.
   accumulate_fluid_at(ctx, grid, p, m, [&](std::uint32_t f, double w) {
     if (one_side) {
+      // Across a periodic seam the side is the minimum image's, as the weight's distance is.
+      double d[3] = {p.position[0][f] - m[0], p.position[1][f] - m[1], p.position[2][f] - m[2]};
+      if (ctx.periodic.any()) ctx.periodic.minimum_image(d);
       double ahead = 0.0;
-      for (int a = 0; a < p.dim; ++a) ahead += (p.position[a][f] - m[a]) * probe.facing[a];
+      for (int a = 0; a < p.dim; ++a) ahead += d[a] * probe.facing[a];
       if (ahead < 0.0) return;
     }
     sum += w * p.pressure[f];

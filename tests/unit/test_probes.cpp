@@ -102,5 +102,33 @@ TEST(PressureSensor, SeesTheFluidInFrontOfItsFaceOnly) {
   }
 }
 
+// The same plate where a periodic channel's seam is: x periodic over [0, 0.4], the sensor at
+// x = 0 facing +x. The water just beyond the seam (x near 0.4, 100 Pa) is behind its face: the
+// side is taken across the seam as the distance is, so it reads the 300 Pa in front only.
+TEST(PressureSensor, JudgesItsSideAcrossAPeriodicSeam) {
+  for (int dim : {2, 3}) {
+    PeriodicBox box;
+    box.periodic[0] = true;
+    box.length[0] = 0.4;
+    const SphContext ctx(dim, kD0, 1.3, 1000.0, box);
+    Particles p;
+    p.dim = dim;
+    add_block(p, 0.0, 0.2, 0.4, 0.0, 0.2, 300.0);
+    add_block(p, 0.2, 0.4, 0.4, 0.0, 0.2, 100.0);
+    NeighborGrid grid;
+    grid.build(p, 2.0 * ctx.h, ctx.periodic);
+    ProbeSpec sensor;
+    sensor.quantity = ProbeSpec::Quantity::Pressure;
+    sensor.point = Vec3(0.0, dim == 3 ? 0.2 : 0.1, dim == 3 ? 0.1 : 0.0);
+    sensor.facing = Vec3::UnitX();
+    const double ahead = sensor_pressure(ctx, grid, p, sensor);
+    sensor.facing = -Vec3::UnitX();
+    const double behind = sensor_pressure(ctx, grid, p, sensor);
+    std::printf("dim %d, at the seam: facing +x %.3f Pa, -x %.3f Pa\n", dim, ahead, behind);
+    EXPECT_NEAR(ahead, 300.0, 1e-9);
+    EXPECT_NEAR(behind, 100.0, 1e-9);
+  }
+}
+
 }  // namespace
 }  // namespace washout
