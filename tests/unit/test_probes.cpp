@@ -41,6 +41,18 @@ ProbeSpec gauge_at_middle(int dim, ProbeSpec::Gauge reads) {
   return probe;
 }
 
+// What a pressure sensor at `point` facing `facing` (zero: no facing) reads from the fluid p.
+double sensor_reading(const SphContext& ctx, const Particles& p, const Vec3& point,
+                      const Vec3& facing) {
+  NeighborGrid grid;
+  grid.build(p, 2.0 * ctx.h, ctx.periodic);
+  ProbeSpec sensor;
+  sensor.quantity = ProbeSpec::Quantity::Pressure;
+  sensor.point = point;
+  sensor.facing = facing;
+  return sensor_pressure(ctx, grid, p, sensor);
+}
+
 // A level layer 0.10 m deep over a bed 0.4 m wide, and a jet 0.03 m thick crossing above it
 // with 0.05 m of air between. The surface gauge reads the layer; the wire gauge its wetted
 // length, the layer and the jet; the highest particle (the reading before) would be 0.18 m.
@@ -84,16 +96,10 @@ TEST(PressureSensor, SeesTheFluidInFrontOfItsFaceOnly) {
     p.dim = dim;
     add_block(p, 0.0, 0.2, 0.4, 0.0, 0.2, 100.0);
     add_block(p, 0.2, 0.4, 0.4, 0.0, 0.2, 300.0);
-    NeighborGrid grid;
-    grid.build(p, 2.0 * ctx.h, ctx.periodic);
-    ProbeSpec sensor;
-    sensor.quantity = ProbeSpec::Quantity::Pressure;
-    sensor.point = Vec3(0.2, dim == 3 ? 0.2 : 0.1, dim == 3 ? 0.1 : 0.0);
-    const double both = sensor_pressure(ctx, grid, p, sensor);
-    sensor.facing = Vec3::UnitX();
-    const double right = sensor_pressure(ctx, grid, p, sensor);
-    sensor.facing = -Vec3::UnitX();
-    const double left = sensor_pressure(ctx, grid, p, sensor);
+    const Vec3 plate(0.2, dim == 3 ? 0.2 : 0.1, dim == 3 ? 0.1 : 0.0);
+    const double both = sensor_reading(ctx, p, plate, Vec3::Zero());
+    const double right = sensor_reading(ctx, p, plate, Vec3::UnitX());
+    const double left = sensor_reading(ctx, p, plate, -Vec3::UnitX());
     std::printf("dim %d: facing +x %.3f Pa, -x %.3f Pa, no facing %.3f Pa\n", dim, right, left,
                 both);
     EXPECT_NEAR(right, 300.0, 1e-9);
@@ -115,15 +121,9 @@ TEST(PressureSensor, JudgesItsSideAcrossAPeriodicSeam) {
     p.dim = dim;
     add_block(p, 0.0, 0.2, 0.4, 0.0, 0.2, 300.0);
     add_block(p, 0.2, 0.4, 0.4, 0.0, 0.2, 100.0);
-    NeighborGrid grid;
-    grid.build(p, 2.0 * ctx.h, ctx.periodic);
-    ProbeSpec sensor;
-    sensor.quantity = ProbeSpec::Quantity::Pressure;
-    sensor.point = Vec3(0.0, dim == 3 ? 0.2 : 0.1, dim == 3 ? 0.1 : 0.0);
-    sensor.facing = Vec3::UnitX();
-    const double ahead = sensor_pressure(ctx, grid, p, sensor);
-    sensor.facing = -Vec3::UnitX();
-    const double behind = sensor_pressure(ctx, grid, p, sensor);
+    const Vec3 seam(0.0, dim == 3 ? 0.2 : 0.1, dim == 3 ? 0.1 : 0.0);
+    const double ahead = sensor_reading(ctx, p, seam, Vec3::UnitX());
+    const double behind = sensor_reading(ctx, p, seam, -Vec3::UnitX());
     std::printf("dim %d, at the seam: facing +x %.3f Pa, -x %.3f Pa\n", dim, ahead, behind);
     EXPECT_NEAR(ahead, 300.0, 1e-9);
     EXPECT_NEAR(behind, 100.0, 1e-9);
