@@ -32,4 +32,17 @@ std::optional<Vec3> find_free_spot(const Vec3& x, int dim, double d0, int max_ri
   return std::nullopt;
 }
 
+std::optional<Vec3> find_free_place(const Vec3& x, int dim, double d0, const FreePlaceTests& tests,
+                                    bool nearby_first) {
+  std::optional<Vec3> spot;
+  if (nearby_first) {
+    spot = find_free_spot(x, dim, d0, kNearbyRings, tests.with_room);
+    if (!spot) spot = find_free_spot(x, dim, d0, kNearbyRings, tests.hole);
+  }
+  if (!spot) spot = find_free_spot(x, dim, d0, kWideRings, tests.with_room);
+  if (!spot) spot = find_free_spot(x, dim, d0, kWideRings, tests.hole);
+  if (!spot) spot = find_free_spot(x, dim, d0, kWideRings, tests.clear_of_solids);
+  return spot;
+}
+
 }  // namespace washout

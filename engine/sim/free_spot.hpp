@@ -18,4 +18,22 @@ namespace washout {
 std::optional<Vec3> find_free_spot(const Vec3& x, int dim, double d0, int max_rings,
                                    const std::function<bool(const Vec3&)>& is_free);
 
+// What makes a place free, best first: a hole with room for one more particle (it arrives at
+// no more than the water's density), any hole (no particle within d0/2), any place clear of
+// the solids with fluid about it.
+struct FreePlaceTests {
+  std::function<bool(const Vec3&)> with_room, hole, clear_of_solids;
+};
+
+// Where a particle at x goes. A closing gap's way out may be far: room, then a hole, then a
+// place clear of the solids, each searched to 20 d0 (kWideRings). With `nearby_first` (a
+// particle put back onto another) room and then a hole within 4 d0 (kNearbyRings, past the
+// kernel's support) come first: searched widely, the first room under deep water is the free
+// surface, and the particle would be carried up through the water (docs/performance.md,
+// fortieth session).
+constexpr int kNearbyRings = 8;
+constexpr int kWideRings = 40;  // wider than the gaps bodies close
+std::optional<Vec3> find_free_place(const Vec3& x, int dim, double d0, const FreePlaceTests& tests,
+                                    bool nearby_first);
+
 }  // namespace washout

@@ -188,8 +188,8 @@ class Simulation {
   // Signed distance of x from the nearest wall or body (negative inside one).
   double distance_to_solids(const Vec3& x) const;
   // Moves fluid particle i, caught in a closing gap or put back onto another particle, to the
-  // nearest free place (free_spot.hpp).
-  void move_to_free_place(std::size_t i);
+  // nearest free place (free_spot.hpp); `nearby_first`: a hole next to it before a wide search.
+  void move_to_free_place(std::size_t i, bool nearby_first);
   // Whether a particle other than i, fluid only or any, lies within d0/2 of y (push_out stage).
   bool crowded(const Vec3& y, std::size_t i, bool fluid_only) const;
   // Calls visit(x) with the position of every particle near y but i, in the grid of the start

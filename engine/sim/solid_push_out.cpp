@@ -111,15 +111,17 @@ void Simulation::push_out_of_solids(StepReport& report) {
   check_wall_crossings(new_crossings, first_crossing);
   relocated_.clear();
   for (std::size_t i = 0; i < n; ++i)
-    if (trapped_[i]) move_to_free_place(i);
+    if (trapped_[i]) move_to_free_place(i, /*nearby_first=*/false);
   // Put back onto another particle: several particles pushed out through the same stretch of
   // a face (under the descending front edge of a rotating girder) land on the same line d0/2
   // outside it, some closer than a fifth of a spacing to each other, and the pressure that
-  // pulls them apart alternates in sign each step. Such a particle moves on to a free place.
+  // pulls them apart alternates in sign each step. Such a particle moves on to a free place,
+  // one next to it first (searched as widely as a closing gap's way out, particles put back out
+  // of a wall's foot under deep water were carried up to the free surface; free_spot.hpp).
   for (std::size_t i = 0; i < n; ++i)
     if (inside_wall_[i] && !trapped_[i] && crowded(particles_.x(i), i, /*fluid_only=*/true)) {
       trapped_[i] = 1;
-      move_to_free_place(i);
+      move_to_free_place(i, /*nearby_first=*/true);
     }
 }
 
@@ -156,7 +158,7 @@ double Simulation::distance_to_solids(const Vec3& x) const {
   return distance;
 }
 
-void Simulation::move_to_free_place(std::size_t i) {
+void Simulation::move_to_free_place(std::size_t i, bool nearby_first) {
   const int dim = particles_.dim;
   const double d0 = ctx_.d0;
   const double r2max = 4.0 * ctx_.h * ctx_.h;
@@ -177,8 +179,8 @@ void Simulation::move_to_free_place(std::size_t i) {
   // Best, a hole with room for it: the kernel-weighted volume of the fluid and the walls there,
   // its own W(0) included, at most that of a full lattice (by the free surface, as a rule), so
   // that it arrives at no more than the water's density. Next to the gap the fluid is usually
-  // packed, so next settle for any hole, and last for any place clear of the solids, within the
-  // same search radius.
+  // packed, so next settle for any hole, and last for any place clear of the solids (the order
+  // and the reach: find_free_place, free_spot.hpp).
   const double room = ctx_.full_support_density / ctx_.rho0 - ctx_.volume * ctx_.kernel.value(0.0);
   auto with_room = [&](const Vec3& y) {
     if (!clear_of_fluid(y)) return false;
@@ -189,10 +191,8 @@ void Simulation::move_to_free_place(std::size_t i) {
     });
     return occupied <= room;
   };
-  const int rings = 40;  // a search radius of 20 d0: wider than the gaps bodies close
-  std::optional<Vec3> spot = find_free_spot(particles_.x(i), dim, d0, rings, with_room);
-  if (!spot) spot = find_free_spot(particles_.x(i), dim, d0, rings, clear_of_fluid);
-  if (!spot) spot = find_free_spot(particles_.x(i), dim, d0, rings, clear_of_solids);
+  const std::optional<Vec3> spot = find_free_place(
+      particles_.x(i), dim, d0, {with_room, clear_of_fluid, clear_of_solids}, nearby_first);
   if (!spot) return;  // left where it is, still counted as inside a wall
   // It takes the velocity of the fluid around its new place (kernel-weighted).
   const double point[3] = {spot->x(), spot->y(), spot->z()};
