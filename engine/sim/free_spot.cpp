@@ -1,14 +1,16 @@
 #include "engine/sim/free_spot.hpp"
 
+#include <algorithm>
 #include <cmath>
 #include <numbers>
 
 namespace washout {
 
 std::optional<Vec3> find_free_spot(const Vec3& x, int dim, double d0, int max_rings,
-                                   const std::function<bool(const Vec3&)>& is_free) {
+                                   const std::function<bool(const Vec3&)>& is_free,
+                                   int first_ring) {
   const double golden_angle = std::numbers::pi * (3.0 - std::sqrt(5.0));
-  for (int k = 1; k <= max_rings; ++k) {
+  for (int k = std::max(1, first_ring); k <= max_rings; ++k) {
     const double radius = 0.5 * d0 * k;
     // About one point per d0/2 of circumference (per (d0/2)^2 of sphere area).
     const double ratio = radius / (0.5 * d0);
@@ -35,12 +37,14 @@ std::optional<Vec3> find_free_spot(const Vec3& x, int dim, double d0, int max_ri
 std::optional<Vec3> find_free_place(const Vec3& x, int dim, double d0, const FreePlaceTests& tests,
                                     bool nearby_first) {
   std::optional<Vec3> spot;
+  int untested = 1;  // the first sphere no search has tried for room or a hole
   if (nearby_first) {
     spot = find_free_spot(x, dim, d0, kNearbyRings, tests.with_room);
     if (!spot) spot = find_free_spot(x, dim, d0, kNearbyRings, tests.hole);
+    untested = kNearbyRings + 1;
   }
-  if (!spot) spot = find_free_spot(x, dim, d0, kWideRings, tests.with_room);
-  if (!spot) spot = find_free_spot(x, dim, d0, kWideRings, tests.hole);
+  if (!spot) spot = find_free_spot(x, dim, d0, kWideRings, tests.with_room, untested);
+  if (!spot) spot = find_free_spot(x, dim, d0, kWideRings, tests.hole, untested);
   if (!spot) spot = find_free_spot(x, dim, d0, kWideRings, tests.clear_of_solids);
   return spot;
 }

@@ -12,11 +12,12 @@
 namespace washout {
 
 // The nearest point to x, searched on circles (2D) or spheres (3D) of radius k d0/2,
-// k = 1 .. max_rings, that `is_free` accepts; none if no tested point is free.
+// k = first_ring .. max_rings, that `is_free` accepts; none if no tested point is free.
 // The directions are evenly spread (a Fibonacci sphere in 3D), so the search has no preferred
 // side; the first free point of the smallest radius wins.
 std::optional<Vec3> find_free_spot(const Vec3& x, int dim, double d0, int max_rings,
-                                   const std::function<bool(const Vec3&)>& is_free);
+                                   const std::function<bool(const Vec3&)>& is_free,
+                                   int first_ring = 1);
 
 // What makes a place free, best first: a hole with room for one more particle (it arrives at
 // no more than the water's density), any hole (no particle within d0/2), any place clear of
@@ -30,7 +31,8 @@ struct FreePlaceTests {
 // particle put back onto another) room and then a hole within 4 d0 (kNearbyRings, past the
 // kernel's support) come first: searched widely, the first room under deep water is the free
 // surface, and the particle would be carried up through the water (docs/performance.md,
-// fortieth session).
+// fortieth session). The wide searches after them start past the spheres they tested: a point
+// with room is a hole too, so none of those spheres holds either.
 constexpr int kNearbyRings = 8;
 constexpr int kWideRings = 40;  // wider than the gaps bodies close
 std::optional<Vec3> find_free_place(const Vec3& x, int dim, double d0, const FreePlaceTests& tests,

@@ -4,6 +4,7 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <numbers>
 
 #include "engine/sim/free_spot.hpp"
 
@@ -60,9 +61,23 @@ TEST(FreePlace, APutBackParticleTakesAHoleNextToItAndAGapsParticleTheRoomFarAway
     tests.hole = [&](const Vec3& y) {
       return tests.clear_of_solids(y) && (y - x).norm() >= 4.9 * kD0;
     };
+    // Each point of the inner spheres is asked for room once: the wide search starts past them.
+    const auto room = tests.with_room;
+    int inner_room_tests = 0;
+    tests.with_room = [&](const Vec3& y) {
+      inner_room_tests += (y - x).norm() < (0.5 * kNearbyRings + 0.01) * kD0;
+      return room(y);
+    };
     const auto beyond = find_free_place(x, dim, kD0, tests, /*nearby_first=*/true);
     ASSERT_TRUE(beyond.has_value());
-    EXPECT_TRUE(tests.with_room(*beyond));
+    EXPECT_TRUE(room(*beyond));
+    int inner_points = 0;
+    for (int k = 1; k <= kNearbyRings; ++k)
+      inner_points += static_cast<int>(dim == 2 ? std::ceil(2.0 * std::numbers::pi * k)
+                                                : std::ceil(4.0 * std::numbers::pi * k * k));
+    std::printf("dim %d: %d room tests within 4 d0 for %d points there\n", dim, inner_room_tests,
+                inner_points);
+    EXPECT_EQ(inner_room_tests, inner_points);
   }
 }
 
