@@ -36,12 +36,12 @@ std::optional<Vec3> find_free_spot(const Vec3& x, int dim, double d0, int max_ri
 
 std::optional<Vec3> find_free_place(const Vec3& x, int dim, double d0, const FreePlaceTests& tests,
                                     bool nearby_first) {
+  // The first sphere no search has tried for room or a hole.
+  const int untested = nearby_first ? kNearbyRings + 1 : 1;
   std::optional<Vec3> spot;
-  int untested = 1;  // the first sphere no search has tried for room or a hole
   if (nearby_first) {
     spot = find_free_spot(x, dim, d0, kNearbyRings, tests.with_room);
     if (!spot) spot = find_free_spot(x, dim, d0, kNearbyRings, tests.hole);
-    untested = kNearbyRings + 1;
   }
   if (!spot) spot = find_free_spot(x, dim, d0, kWideRings, tests.with_room, untested);
   if (!spot) spot = find_free_spot(x, dim, d0, kWideRings, tests.hole, untested);
