@@ -12,81 +12,152 @@ CholeskyFactorSolve::Columns CholeskyFactorSolve::columns() const {
 void CholeskyFactorSolve::build(const Factor& factor) {
   factor_ = &factor;
   const Columns L = columns();
-
-  // Each column's depth in the elimination tree (a parent comes after its children).
-  const auto n = static_cast<std::size_t>(L.n);
-  std::vector<std::int32_t> depth(n, 0);
-  std::int32_t deepest = 0;
-  for (std::size_t j = n; j-- > 0;) {
-    if (L.start[j + 1] - L.start[j] > 1)
-      depth[j] = depth[static_cast<std::size_t>(L.row[L.start[j] + 1])] + 1;
-    deepest = std::max(deepest, depth[j]);
+  // Column j + 1 continues column j's supernode when column j's rows are j, j + 1 and then
+  // exactly column j + 1's rows below its diagonal: by induction every column of a supernode
+  // j..e-1 holds the rows from itself to e - 1 and then the last column's rows below.
+  const auto continues = [&](std::int64_t j) {
+    const std::int64_t a = L.start[j], b = L.start[j + 1];
+    if (b - a != L.start[j + 2] - b + 1 || L.row[a + 1] != j + 1) return false;
+    return std::equal(L.row + a + 2, L.row + b, L.row + b + 1);
+  };
+  node_start_.assign(1, 0);
+  std::size_t longest = 0;  // no supernode has more rows below it than the longest column
+  for (std::int64_t j = 0; j < L.n; ++j) {
+    longest = std::max(longest, static_cast<std::size_t>(L.start[j + 1] - L.start[j]));
+    if (j + 1 == L.n || !continues(j)) node_start_.push_back(static_cast<std::int32_t>(j + 1));
   }
-  // The columns by depth; within one, longest first, so that a group of four has alike lengths.
-  by_depth_.resize(n);
-  for (std::size_t j = 0; j < n; ++j) by_depth_[j] = static_cast<std::int32_t>(j);
-  const auto length = [&](std::int32_t j) { return L.start[j + 1] - L.start[j]; };
-  std::sort(by_depth_.begin(), by_depth_.end(), [&](std::int32_t a, std::int32_t b) {
-    const auto da = depth[static_cast<std::size_t>(a)], db = depth[static_cast<std::size_t>(b)];
-    if (da != db) return da < db;
-    if (length(a) != length(b)) return length(a) > length(b);
-    return a < b;
-  });
-  depth_start_.assign(static_cast<std::size_t>(deepest) + 2, 0);
-  for (std::size_t j = 0; j < n; ++j) ++depth_start_[static_cast<std::size_t>(depth[j]) + 1];
-  for (std::size_t d = 0; d + 1 < depth_start_.size(); ++d) depth_start_[d + 1] += depth_start_[d];
+  below_.resize(longest);
+  // Multiplied by, not divided: the solves' chains wait for each column's result, and a
+  // division takes several times a multiplication's latency.
+  inverse_diagonal_.resize(static_cast<std::size_t>(L.n));
+  for (std::int64_t j = 0; j < L.n; ++j) inverse_diagonal_[j] = 1.0 / L.value[L.start[j]];
 }
 
+std::size_t CholeskyFactorSolve::widest_supernode() const {
+  std::size_t widest = 0;
+  for (std::size_t k = 0; k + 1 < node_start_.size(); ++k)
+    widest = std::max(widest, static_cast<std::size_t>(node_start_[k + 1] - node_start_[k]));
+  return widest;
+}
+
+namespace {
+
+constexpr std::int64_t kPanel = 4;  // columns taken together in the dense blocks
+
+// Where column j's entry in row i (i > j, i inside j's supernode or below it) is stored, as an
+// offset from the diagonal: rows j + 1..e - 1 of the diagonal block first, then the rows below.
+const double* entries_from(const CholeskyFactorSolve::Columns& L, std::int64_t j,
+                           std::int64_t offset) {
+  return L.value + L.start[j] + offset;
+}
+
+// out[r] -= sum_c column[c][r] y[c] over `count` (<= kPanel) columns: four columns a pass, so
+// that each load and store of out serves four products.
+void subtract_columns(const double* const* column, const double* y, std::int64_t count, double* out,
+                      std::int64_t length) {
+  if (count == kPanel) {
+    const double *c0 = column[0], *c1 = column[1], *c2 = column[2], *c3 = column[3];
+    const double y0 = y[0], y1 = y[1], y2 = y[2], y3 = y[3];
+#pragma omp simd
+    for (std::int64_t r = 0; r < length; ++r)
+      out[r] -= (c0[r] * y0 + c1[r] * y1) + (c2[r] * y2 + c3[r] * y3);
+    return;
+  }
+  for (std::int64_t c = 0; c < count; ++c) {
+    const double* cc = column[c];
+    const double yc = y[c];
+#pragma omp simd
+    for (std::int64_t r = 0; r < length; ++r) out[r] -= cc[r] * yc;
+  }
+}
+
+// dot[c] = sum_r column[c][r] v[r] over `count` (<= kPanel) columns: four independent sums
+// sharing each load of v.
+void dot_columns(const double* const* column, std::int64_t count, const double* v,
+                 std::int64_t length, double* dot) {
+  if (count == kPanel) {
+    const double *c0 = column[0], *c1 = column[1], *c2 = column[2], *c3 = column[3];
+    double d0 = 0.0, d1 = 0.0, d2 = 0.0, d3 = 0.0;
+#pragma omp simd reduction(+ : d0, d1, d2, d3)
+    for (std::int64_t r = 0; r < length; ++r) {
+      const double g = v[r];
+      d0 += c0[r] * g;
+      d1 += c1[r] * g;
+      d2 += c2[r] * g;
+      d3 += c3[r] * g;
+    }
+    dot[0] = d0, dot[1] = d1, dot[2] = d2, dot[3] = d3;
+    return;
+  }
+  for (std::int64_t c = 0; c < count; ++c) {
+    const double* cc = column[c];
+    double d = 0.0;
+#pragma omp simd reduction(+ : d)
+    for (std::int64_t r = 0; r < length; ++r) d += cc[r] * v[r];
+    dot[c] = d;
+  }
+}
+
+}  // namespace
+
+// L y = b, a supernode at a time and within it a panel of kPanel columns at a time: the panel's
+// own small triangle, then its columns subtracted from the block's later rows and from the rows
+// below the block (gathered, updated, scattered back).
 void CholeskyFactorSolve::forward(const Columns& L) {
   double* x = work_.data();
-  for (std::int64_t j = 0; j < L.n; ++j) {
-    if (x[j] == 0.0) continue;  // subtracts nothing (Eigen skips it too)
-    x[j] /= L.value[L.start[j]];
-    const double y = x[j];
-    for (std::int64_t k = L.start[j] + 1; k < L.start[j + 1]; ++k) x[L.row[k]] -= y * L.value[k];
+  const double* column[kPanel];
+  for (std::size_t k = 0; k + 1 < node_start_.size(); ++k) {
+    const std::int64_t s = node_start_[k], e = node_start_[k + 1];
+    const std::int64_t below = L.start[e] - L.start[e - 1] - 1;
+    const int* rows = L.row + L.start[e - 1] + 1;
+    double* gathered = below_.data();
+    for (std::int64_t r = 0; r < below; ++r) gathered[r] = x[rows[r]];
+    for (std::int64_t ps = s; ps < e; ps += kPanel) {
+      const std::int64_t pe = std::min(ps + kPanel, e), count = pe - ps;
+      for (std::int64_t j = ps; j < pe; ++j) {
+        const double* diagonal = entries_from(L, j, 0);
+        x[j] *= inverse_diagonal_[j];
+        for (std::int64_t i = j + 1; i < pe; ++i) x[i] -= x[j] * diagonal[i - j];
+      }
+      for (std::int64_t c = 0; c < count; ++c) column[c] = entries_from(L, ps + c, pe - ps - c);
+      subtract_columns(column, x + ps, count, x + pe, e - pe);
+      for (std::int64_t c = 0; c < count; ++c) column[c] = entries_from(L, ps + c, e - ps - c);
+      subtract_columns(column, x + ps, count, gathered, below);
+    }
+    for (std::int64_t r = 0; r < below; ++r) x[rows[r]] = gathered[r];
   }
 }
 
+// L^T x = y, the supernodes from the last: the rows below a supernode are final, their x
+// gathered once and dotted with its columns; then its diagonal block a panel at a time from
+// its last column, the rows after the panel dotted with the panel's columns before the panel's
+// small triangle.
 void CholeskyFactorSolve::backward(const Columns& L) {
   double* x = work_.data();
-  // x_j = (y_j - sum_{k} L_kj x_k) / L_jj. What a group of four leaves (the tree's top: a chain
-  // of long columns, one to a depth) is summed in four partial sums, four chains at once.
-  const auto finish = [&](std::int32_t j, std::int64_t from, double sum) {
-    const std::int64_t end = L.start[j + 1];
-    double s1 = 0.0, s2 = 0.0, s3 = 0.0;
-    std::int64_t k = from;
-    for (; k + 4 <= end; k += 4) {
-      sum -= L.value[k] * x[L.row[k]];
-      s1 -= L.value[k + 1] * x[L.row[k + 1]];
-      s2 -= L.value[k + 2] * x[L.row[k + 2]];
-      s3 -= L.value[k + 3] * x[L.row[k + 3]];
-    }
-    for (; k < end; ++k) sum -= L.value[k] * x[L.row[k]];
-    x[j] = (sum + (s1 + s2 + s3)) / L.value[L.start[j]];
-  };
-  for (std::size_t d = 0; d + 1 < depth_start_.size(); ++d) {
-    std::int64_t g = depth_start_[d];
-    const std::int64_t end = depth_start_[d + 1];
-    for (; g + 4 <= end; g += 4) {  // four independent columns: four chains at once
-      const std::int32_t j0 = by_depth_[g], j1 = by_depth_[g + 1], j2 = by_depth_[g + 2],
-                         j3 = by_depth_[g + 3];
-      const std::int64_t b0 = L.start[j0] + 1, b1 = L.start[j1] + 1, b2 = L.start[j2] + 1,
-                         b3 = L.start[j3] + 1;
-      const std::int64_t common = std::min(
-          {L.start[j0 + 1] - b0, L.start[j1 + 1] - b1, L.start[j2 + 1] - b2, L.start[j3 + 1] - b3});
-      double s0 = x[j0], s1 = x[j1], s2 = x[j2], s3 = x[j3];
-      for (std::int64_t k = 0; k < common; ++k) {
-        s0 -= L.value[b0 + k] * x[L.row[b0 + k]];
-        s1 -= L.value[b1 + k] * x[L.row[b1 + k]];
-        s2 -= L.value[b2 + k] * x[L.row[b2 + k]];
-        s3 -= L.value[b3 + k] * x[L.row[b3 + k]];
+  const double* column[kPanel];
+  double dot[kPanel];
+  for (std::size_t k = node_start_.size() - 1; k-- > 0;) {
+    const std::int64_t s = node_start_[k], e = node_start_[k + 1];
+    const std::int64_t below = L.start[e] - L.start[e - 1] - 1;
+    const int* rows = L.row + L.start[e - 1] + 1;
+    double* gathered = below_.data();
+    for (std::int64_t r = 0; r < below; ++r) gathered[r] = x[rows[r]];
+    for (std::int64_t pe = e; pe > s;) {
+      const std::int64_t ps = std::max(pe - kPanel, s), count = pe - ps;
+      for (std::int64_t c = 0; c < count; ++c) column[c] = entries_from(L, ps + c, e - ps - c);
+      dot_columns(column, count, gathered, below, dot);
+      for (std::int64_t c = 0; c < count; ++c) x[ps + c] -= dot[c];
+      for (std::int64_t c = 0; c < count; ++c) column[c] = entries_from(L, ps + c, pe - ps - c);
+      dot_columns(column, count, x + pe, e - pe, dot);
+      for (std::int64_t c = 0; c < count; ++c) x[ps + c] -= dot[c];
+      for (std::int64_t j = pe - 1; j >= ps; --j) {
+        const double* diagonal = entries_from(L, j, 0);
+        double sum = x[j];
+        for (std::int64_t i = j + 1; i < pe; ++i) sum -= diagonal[i - j] * x[i];
+        x[j] = sum * inverse_diagonal_[j];
       }
-      finish(j0, b0 + common, s0);
-      finish(j1, b1 + common, s1);
-      finish(j2, b2 + common, s2);
-      finish(j3, b3 + common, s3);
+      pe = ps;
     }
-    for (; g < end; ++g) finish(by_depth_[g], L.start[by_depth_[g]] + 1, x[by_depth_[g]]);
   }
 }
 
