@@ -7,11 +7,12 @@
 // which each column's rows are the next column's plus that column itself, so that the run shares
 // one list of rows below its diagonal block (the factor of a 3D coarse PPE system holds about
 // 70 % of its entries in supernodes eight or more columns wide). Below the diagonal block a
-// supernode is a dense block of rows: the forward solve subtracts it from those rows as one sum
-// a row (a loop over the block's columns, contiguous and vectorised), the backward solve gathers
-// their x once and takes each column's dot product with them (vectorised partial sums). The
-// diagonal block is a small dense triangle. Another rounding than Eigen's
-// (tests/unit/test_cholesky_factor_solve.cpp holds it to Eigen's solve).
+// supernode is a dense block of rows, whose x are gathered once: the forward solve subtracts
+// four columns' products from them a pass, the backward solve takes four columns' dot products
+// with them a pass (contiguous, vectorised, four independent sums). The diagonal block goes the
+// same way in panels of four columns, each panel's own small triangle solved in between.
+// Another rounding than Eigen's (tests/unit/test_cholesky_factor_solve.cpp holds it to Eigen's
+// solve).
 // Used for the coarse system of pcg_agg (aggregation_preconditioner.cpp), where it is serial
 // work inside every CG iteration (docs/performance.md, forty-second session).
 #include <Eigen/SparseCholesky>
