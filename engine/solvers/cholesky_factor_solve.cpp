@@ -44,13 +44,6 @@ namespace {
 
 constexpr std::int64_t kPanel = 4;  // columns taken together in the dense blocks
 
-// Where column j's entry in row i (i > j, i inside j's supernode or below it) is stored, as an
-// offset from the diagonal: rows j + 1..e - 1 of the diagonal block first, then the rows below.
-const double* entries_from(const CholeskyFactorSolve::Columns& L, std::int64_t j,
-                           std::int64_t offset) {
-  return L.value + L.start[j] + offset;
-}
-
 // out[r] -= sum_c column[c][r] y[c] over `count` (<= kPanel) columns: four columns a pass, so
 // that each load and store of out serves four products.
 void subtract_columns(const double* const* column, const double* y, std::int64_t count, double* out,

@@ -37,14 +37,18 @@ class CholeskyFactorSolve {
   // The widest supernode's columns.
   std::size_t widest_supernode() const;
 
+ private:
   // L by columns, in the factor's own arrays: the diagonal first, rows increasing.
   struct Columns {
     std::int64_t n;
     const int *start, *row;
     const double* value;
   };
-
- private:
+  // Column j's entries from `offset` places below its diagonal on: rows j + 1..e - 1 of its
+  // supernode's diagonal block (e its end) come first, then the rows below the block.
+  static const double* entries_from(const Columns& L, std::int64_t j, std::int64_t offset) {
+    return L.value + L.start[j] + offset;
+  }
   Columns columns() const;
   void forward(const Columns& L);   // L y = b in place
   void backward(const Columns& L);  // L^T x = y in place
@@ -53,7 +57,7 @@ class CholeskyFactorSolve {
   std::vector<std::int32_t> node_start_;  // supernode k: columns node_start_[k] to [k + 1] - 1
   Eigen::VectorXd work_;
   std::vector<double> inverse_diagonal_;  // 1 / L_jj
-  std::vector<double> below_;  // one supernode's sums (forward) or gathered x (backward) below
+  std::vector<double> below_;  // x in the rows below one supernode's diagonal block, gathered
 };
 
 }  // namespace washout
