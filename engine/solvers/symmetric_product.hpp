@@ -24,7 +24,7 @@ namespace washout {
 class SymmetricProduct {
  public:
   // Takes A's diagonal and upper triangle (A must be symmetric: its lower triangle is not read).
-  // False, holding nothing, where the buffers' reach beyond their blocks would exceed half the
+  // False, and not ready(), where the buffers' reach beyond their blocks would exceed half the
   // upper entries.
   bool build(const CsrMatrix& A);
   bool ready() const { return rows_ > 0; }
@@ -33,8 +33,10 @@ class SymmetricProduct {
   void multiply(const std::vector<double>& x, std::vector<double>& y);  // y = A x
   // The least memory traffic of one product, as csr_product_bytes counts the full rows'.
   double product_bytes() const;
-  std::size_t upper_entries() const { return value_.size(); }
-  std::size_t spill_entries() const { return buffer_.size() - rows_; }  // beyond the blocks
+  std::size_t upper_entries() const { return ready() ? value_.size() : 0; }
+  std::size_t spill_entries() const {  // beyond the blocks
+    return ready() ? buffer_.size() - rows_ : 0;
+  }
 
  private:
   std::size_t rows_ = 0, block_rows_ = 0, blocks_ = 0;
