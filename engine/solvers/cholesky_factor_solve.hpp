@@ -13,9 +13,19 @@
 // same way in panels of four columns, each panel's own small triangle solved in between.
 // Another rounding than Eigen's (tests/unit/test_cholesky_factor_solve.cpp holds it to Eigen's
 // solve).
+//
+// Two threads. A column's entries below its diagonal lie in the rows of its ancestors in the
+// elimination tree (parent(j): the first row below L_jj), so two disjoint subtrees are solved
+// independently, forwards and backwards, except where they meet in their common ancestors. The
+// tree is cut into a top (the ancestors) and subtrees shared between two groups of about equal
+// work; forwards, each group solves its subtrees and sums what it subtracts from the top's rows
+// in a vector of its own, the two added in group order before the top is solved; backwards, the
+// top first, then the groups. The groups are a property of the factor, not of the threads: one
+// thread solves both, one after the other, to the same bits.
 // Used for the coarse system of pcg_agg (aggregation_preconditioner.cpp), where it is serial
-// work inside every CG iteration (docs/performance.md, forty-second session).
+// work inside every CG iteration (docs/performance.md, forty-second and forty-third sessions).
 #include <Eigen/SparseCholesky>
+#include <array>
 #include <cstdint>
 #include <vector>
 
@@ -36,6 +46,10 @@ class CholeskyFactorSolve {
   std::size_t supernodes() const { return node_start_.empty() ? 0 : node_start_.size() - 1; }
   // The widest supernode's columns.
   std::size_t widest_supernode() const;
+  // The factor's entries in each group's subtrees and in the top (all in the top where no cut
+  // pays: a small factor, or a tree without two subtrees of comparable work).
+  std::array<std::size_t, 2> group_entries() const { return group_entries_; }
+  std::size_t top_entries() const { return top_entries_; }
 
  private:
   // L by columns, in the factor's own arrays: the diagonal first, rows increasing.
@@ -50,14 +64,29 @@ class CholeskyFactorSolve {
     return L.value + L.start[j] + offset;
   }
   Columns columns() const;
-  void forward(const Columns& L);   // L y = b in place
-  void backward(const Columns& L);  // L^T x = y in place
+  // Each column's owner: group 0 or 1, or kTop; fills group_entries_ and top_entries_.
+  std::vector<std::int8_t> cut_tree(const Columns& L);
+  // L y = b in place over the supernodes `nodes` (increasing); the rows below a supernode past
+  // its first own_below_[k] (the top's, for a group's supernode) are updated in `top_part`.
+  void forward(const Columns& L, const std::vector<std::int32_t>& nodes, double* top_part,
+               double* gathered);
+  // L^T x = y in place over `nodes`, taken from the last.
+  void backward(const Columns& L, const std::vector<std::int32_t>& nodes, double* gathered);
 
+  static constexpr std::int8_t kTop = -1;
   const Factor* factor_ = nullptr;
   std::vector<std::int32_t> node_start_;  // supernode k: columns node_start_[k] to [k + 1] - 1
+  std::vector<std::int64_t> own_below_;   // per supernode: its rows below in its own group
+  std::array<std::vector<std::int32_t>, 2> group_nodes_;  // supernodes of each group
+  std::vector<std::int32_t> top_nodes_, top_columns_;
+  std::array<std::size_t, 2> group_entries_{};
+  std::size_t top_entries_ = 0;
+  bool parallel_ = false;  // the groups on two threads
   Eigen::VectorXd work_;
   std::vector<double> inverse_diagonal_;  // 1 / L_jj
-  std::vector<double> below_;  // x in the rows below one supernode's diagonal block, gathered
+  // Per group: its forward solve's updates of the top's rows (zero elsewhere), and x in the rows
+  // below one supernode's diagonal block, gathered (the top uses group 0's).
+  std::array<std::vector<double>, 2> top_part_, below_;
 };
 
 }  // namespace washout

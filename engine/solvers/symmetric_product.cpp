@@ -38,7 +38,7 @@ bool SymmetricProduct::build(const CsrMatrix& A) {
   const std::size_t blocks = (n + block_rows - 1) / block_rows;
   const bool parallel = A.nonzeros() > kParallelNonzeros;
 
-  diagonal_.resize(n);  // each row sets its own, in the fill below
+  diagonal_.resize(n);   // each row sets its own, in the fill below
   start_.resize(n + 1);  // each row sets its count, in the walk below
   start_[0] = 0;
   // One walk over the columns gives each row's upper count and each block's reach (the furthest

@@ -2,8 +2,10 @@
 // (engine/solvers/cholesky_factor_solve.hpp): the blocks below the supernodes' diagonals summed
 // as dense blocks, in vectorised partial sums.
 #include <gtest/gtest.h>
+#include <omp.h>
 
 #include <Eigen/SparseCholesky>
+#include <algorithm>
 #include <random>
 #include <vector>
 
@@ -81,6 +83,52 @@ TEST(CholeskyFactorSolve, GivesTheFactorsOwnSolutionToRounding) {
     EXPECT_LT(fast.supernodes(), fast.rows() / 2);
     EXPECT_GT(fast.widest_supernode(), 8u);
   }
+}
+
+// The elimination tree cut in two groups and a top (the header's "Two threads"): on a system of
+// the coarse PPE's size, both groups hold work and the longer path (top plus heavier group) is a
+// clear saving on the whole; one thread gives the same bits as two, and a small factor stays
+// whole.
+TEST(CholeskyFactorSolve, TwoGroupsOfSubtreesTheSameBitsOnOneThreadAsOnTwo) {
+  const Eigen::SparseMatrix<double> A = lattice_system(30, 10, 1, 11u);
+  CholeskyFactorSolve::Factor factor(A);
+  ASSERT_EQ(factor.info(), Eigen::Success);
+  CholeskyFactorSolve fast;
+  fast.build(factor);
+  const auto groups = fast.group_entries();
+  const double total = double(groups[0] + groups[1] + fast.top_entries());
+  const double path = double(fast.top_entries() + std::max(groups[0], groups[1]));
+  std::printf(
+      "%zu rows, %.0f entries: groups %zu and %zu, top %zu; longer path %.2f of the whole\n",
+      fast.rows(), total, groups[0], groups[1], fast.top_entries(), path / total);
+  EXPECT_GT(groups[0], 0u);
+  EXPECT_GT(groups[1], 0u);
+  EXPECT_LT(path / total, 0.8);  // kWorthwhileCut
+
+  std::mt19937 random(5);
+  std::normal_distribution<double> normal;
+  Eigen::VectorXd b(A.rows());
+  for (Eigen::Index i = 0; i < b.size(); ++i) b[i] = normal(random);
+  Eigen::VectorXd x1, x2;
+  const int threads = omp_get_max_threads();
+  omp_set_num_threads(1);
+  fast.solve(b, x1);
+  omp_set_num_threads(2);
+  fast.solve(b, x2);
+  fast.solve(b, x2);  // the top's parts cleared after each solve: a second gives the same
+  omp_set_num_threads(threads);
+  EXPECT_EQ(x1, x2);
+  const Eigen::VectorXd expected = factor.solve(b);
+  const double difference =
+      (x2 - expected).lpNorm<Eigen::Infinity>() / expected.lpNorm<Eigen::Infinity>();
+  std::printf("from Eigen's solve %.2e\n", difference);
+  EXPECT_LT(difference, 1e-10);
+
+  const Eigen::SparseMatrix<double> small = lattice_system(6, 5, 1, 3u);
+  CholeskyFactorSolve::Factor small_factor(small);
+  CholeskyFactorSolve whole;
+  whole.build(small_factor);
+  EXPECT_EQ(whole.group_entries()[0] + whole.group_entries()[1], 0u);
 }
 
 }  // namespace
