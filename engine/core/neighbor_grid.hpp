@@ -69,6 +69,10 @@ class NeighborGrid {
   std::vector<std::uint32_t> cell_start_;  // [cell count + 2]; the last bucket: the retired
   std::vector<std::uint32_t> sorted_;      // particle indices ordered by cell
   std::vector<std::uint32_t> cell_of_;     // cell of each particle
+  // The counting sort's work space, per thread's range of particles: counts per cell, then each
+  // cell's first slot for the range; and the ranges' totals.
+  std::vector<std::vector<std::uint32_t>> range_count_;
+  std::vector<std::uint32_t> range_total_;
   std::array<std::vector<double>, 3> sorted_position_;  // x, y, z of sorted_[k] at [a][k]
   mutable RowBlocks<std::uint32_t> list_blocks_;        // build_list's work space, kept
 };

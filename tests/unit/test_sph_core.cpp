@@ -121,6 +121,31 @@ TEST(NeighborGrid, SameListWithAnyNumberOfThreads) {
   }
 }
 
+// The grid's counting sort runs on all threads past 20,000 particles, each counting its own
+// range of indices: the same cells, in the same order, whatever the number of threads (three
+// threads split 30,000 particles and the cells unevenly; every seventh particle retired).
+TEST(NeighborGrid, SameSortWithAnyNumberOfThreads) {
+  Particles p = random_particles(3, 30000, 1.0, 17);
+  for (std::size_t i = 3; i < p.size(); i += 7)
+    p.kind[i] = static_cast<std::uint8_t>(ParticleKind::Retired);
+  const int threads_before = omp_get_max_threads();
+  std::vector<NeighborList> lists(3);
+  for (int threads = 1; threads <= 3; ++threads) {
+    omp_set_num_threads(threads);
+    NeighborGrid grid;
+    grid.build(p, 0.05, PeriodicBox{});
+    omp_set_num_threads(1);  // the lists alike by their own test above: only the sort varies
+    grid.build_list(p, p.size(), 0.05, lists[threads - 1]);
+  }
+  omp_set_num_threads(threads_before);
+  std::printf("%zu pairs\n", lists[0].pair_count());
+  EXPECT_GT(lists[0].pair_count(), 100000u);
+  for (int t = 1; t < 3; ++t) {
+    EXPECT_EQ(lists[t].offset, lists[0].offset) << t + 1 << " threads";
+    EXPECT_EQ(lists[t].index, lists[0].index) << t + 1 << " threads";
+  }
+}
+
 // The neighbour walk (for_each_neighbor, which takes the pairs' geometry a chunk of 64 ahead)
 // visits each listed neighbour once, in the list's order, with r_ij = x_i - x_j (periodic
 // minimum image), |r|^2 and |r| as computed directly; rows longer than one chunk included.
