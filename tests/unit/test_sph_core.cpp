@@ -99,6 +99,22 @@ TEST(NeighborGrid, MatchesBruteForce) {
     }
 }
 
+// The lists that make(threads, list) gives on one, two and three threads: alike, row for row
+// and in the same order, and holding more than `least_pairs` pairs. The thread count restored.
+template <class Make>
+void expect_same_lists_on_any_thread_count(Make&& make, std::size_t least_pairs) {
+  const int threads_before = omp_get_max_threads();
+  std::vector<NeighborList> lists(3);
+  for (int threads = 1; threads <= 3; ++threads) make(threads, lists[threads - 1]);
+  omp_set_num_threads(threads_before);
+  std::printf("%zu pairs\n", lists[0].pair_count());
+  EXPECT_GT(lists[0].pair_count(), least_pairs);
+  for (int t = 1; t < 3; ++t) {
+    EXPECT_EQ(lists[t].offset, lists[0].offset) << t + 1 << " threads";
+    EXPECT_EQ(lists[t].index, lists[0].index) << t + 1 << " threads";
+  }
+}
+
 // The list is built a block of rows per thread and copied into place: the same list, row for
 // row and in the same order, whatever the number of threads (blocks of 512 rows: 3000 particles
 // make six, dealt unevenly to three threads).
@@ -106,19 +122,12 @@ TEST(NeighborGrid, SameListWithAnyNumberOfThreads) {
   Particles p = random_particles(3, 3000, 1.0, 13);
   NeighborGrid grid;
   grid.build(p, 0.11, PeriodicBox{});
-  const int threads_before = omp_get_max_threads();
-  std::vector<NeighborList> lists(3);
-  for (int threads = 1; threads <= 3; ++threads) {
-    omp_set_num_threads(threads);
-    grid.build_list(p, p.size(), 0.11, lists[threads - 1]);
-  }
-  omp_set_num_threads(threads_before);
-  std::printf("%zu pairs\n", lists[0].pair_count());
-  EXPECT_GT(lists[0].pair_count(), 10000u);
-  for (int t = 1; t < 3; ++t) {
-    EXPECT_EQ(lists[t].offset, lists[0].offset) << t + 1 << " threads";
-    EXPECT_EQ(lists[t].index, lists[0].index) << t + 1 << " threads";
-  }
+  expect_same_lists_on_any_thread_count(
+      [&](int threads, NeighborList& list) {
+        omp_set_num_threads(threads);
+        grid.build_list(p, p.size(), 0.11, list);
+      },
+      10000u);
 }
 
 // The grid's counting sort runs on all threads past 20,000 particles, each counting its own
@@ -128,22 +137,15 @@ TEST(NeighborGrid, SameSortWithAnyNumberOfThreads) {
   Particles p = random_particles(3, 30000, 1.0, 17);
   for (std::size_t i = 3; i < p.size(); i += 7)
     p.kind[i] = static_cast<std::uint8_t>(ParticleKind::Retired);
-  const int threads_before = omp_get_max_threads();
-  std::vector<NeighborList> lists(3);
-  for (int threads = 1; threads <= 3; ++threads) {
-    omp_set_num_threads(threads);
-    NeighborGrid grid;
-    grid.build(p, 0.05, PeriodicBox{});
-    omp_set_num_threads(1);  // the lists alike by their own test above: only the sort varies
-    grid.build_list(p, p.size(), 0.05, lists[threads - 1]);
-  }
-  omp_set_num_threads(threads_before);
-  std::printf("%zu pairs\n", lists[0].pair_count());
-  EXPECT_GT(lists[0].pair_count(), 100000u);
-  for (int t = 1; t < 3; ++t) {
-    EXPECT_EQ(lists[t].offset, lists[0].offset) << t + 1 << " threads";
-    EXPECT_EQ(lists[t].index, lists[0].index) << t + 1 << " threads";
-  }
+  expect_same_lists_on_any_thread_count(
+      [&](int threads, NeighborList& list) {
+        omp_set_num_threads(threads);
+        NeighborGrid grid;
+        grid.build(p, 0.05, PeriodicBox{});
+        omp_set_num_threads(1);  // the lists alike by their own test above: only the sort varies
+        grid.build_list(p, p.size(), 0.05, list);
+      },
+      100000u);
 }
 
 // The neighbour walk (for_each_neighbor, which takes the pairs' geometry a chunk of 64 ahead)
