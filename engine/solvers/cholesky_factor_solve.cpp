@@ -130,7 +130,6 @@ void CholeskyFactorSolve::build(const Factor& factor) {
   const std::size_t nodes = node_start_.size() - 1;
   own_below_.resize(nodes);
   top_nodes_.clear();
-  top_columns_.clear();
   for (auto& list : group_nodes_) list.clear();
   for (std::size_t k = 0; k < nodes; ++k) {
     const std::int64_t s = node_start_[k], e = node_start_[k + 1];
@@ -140,7 +139,6 @@ void CholeskyFactorSolve::build(const Factor& factor) {
     std::int64_t own = below;
     if (group == kTop) {
       top_nodes_.push_back(static_cast<std::int32_t>(k));
-      for (std::int64_t j = s; j < e; ++j) top_columns_.push_back(static_cast<std::int32_t>(j));
     } else {
       group_nodes_[group].push_back(static_cast<std::int32_t>(k));
       own = std::find_if(rows, rows + below, [&](int r) { return owner[r] == kTop; }) - rows;
@@ -291,11 +289,12 @@ void CholeskyFactorSolve::solve(const Eigen::VectorXd& b, Eigen::VectorXd& x) {
   if (cut) {
 #pragma omp parallel for num_threads(2) schedule(static, 1) if (parallel_)
     for (int g = 0; g < 2; ++g) forward(L, group_nodes_[g], top_part_[g].data(), below_[g].data());
-    for (const std::int32_t j : top_columns_) {  // in group order, then cleared for the next
-      y[j] += top_part_[0][j];
-      y[j] += top_part_[1][j];
-      top_part_[0][j] = top_part_[1][j] = 0.0;
-    }
+    for (const std::int32_t k : top_nodes_)  // in group order, then cleared for the next
+      for (std::int64_t j = node_start_[k]; j < node_start_[k + 1]; ++j) {
+        y[j] += top_part_[0][j];
+        y[j] += top_part_[1][j];
+        top_part_[0][j] = top_part_[1][j] = 0.0;
+      }
   }
   forward(L, top_nodes_, nullptr, below_[0].data());
   backward(L, top_nodes_, below_[0].data());

@@ -78,7 +78,7 @@ class CholeskyFactorSolve {
   std::vector<std::int32_t> node_start_;  // supernode k: columns node_start_[k] to [k + 1] - 1
   std::vector<std::int64_t> own_below_;   // per supernode: its rows below in its own group
   std::array<std::vector<std::int32_t>, 2> group_nodes_;  // supernodes of each group
-  std::vector<std::int32_t> top_nodes_, top_columns_;
+  std::vector<std::int32_t> top_nodes_;
   std::array<std::size_t, 2> group_entries_{};
   std::size_t top_entries_ = 0;
   bool parallel_ = false;  // the groups on two threads
