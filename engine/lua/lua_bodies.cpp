@@ -169,8 +169,9 @@ int l_friction(lua_State* L) {
 
 int l_contact(lua_State* L) {
   luaL_checktype(L, 1, LUA_TTABLE);
-  check_keys(L, 1, "washout.contact",
-             {"law", "damping_mass", "allow_tension", "steps_per_contact", "max_substeps"});
+  check_keys(
+      L, 1, "washout.contact",
+      {"law", "damping_mass", "allow_tension", "steps_per_contact", "max_substeps", "rest_steps"});
   ContactSpec& c = resolved_model(L).contact;
   c.law = read_string(L, 1, "law", c.law);
   if (c.law != "linear" && c.law != "hertz")
@@ -192,6 +193,11 @@ int l_contact(lua_State* L) {
       read_number(L, 1, "max_substeps", "washout.contact", false, double(c.max_substeps));
   if (!(most >= 1)) fail(L, " washout.contact: max_substeps must be >= 1");
   c.max_substeps = static_cast<long>(most);
+  const double rest =
+      read_number(L, 1, "rest_steps", "washout.contact", false, double(c.rest_steps));
+  if (!(rest >= 0 && rest <= 1e9 && rest == std::floor(rest)))
+    fail(L, " washout.contact: rest_steps must be a whole number >= 0 (0: bodies never sleep)");
+  c.rest_steps = static_cast<int>(rest);
   return 0;
 }
 

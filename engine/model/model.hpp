@@ -58,6 +58,9 @@ struct ContactSpec {
   bool allow_tension = true;
   double steps_per_contact = 20.0;
   long max_substeps = 1000000;
+  // Fluid steps all dynamic bodies must stay still, balanced and dry before they sleep (0: never;
+  // docs/rigid_bodies.md "Rest").
+  int rest_steps = 10;
 };
 
 // A prescribed body pose at time t, relative to the body's initial pose: the displacement of

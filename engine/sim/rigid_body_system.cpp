@@ -67,7 +67,7 @@ std::string format_vector(const Vec3& v, int dim) {
 
 RigidBodySystem::RigidBodySystem(const Model& model, std::vector<BuiltBody> bodies,
                                  std::vector<std::size_t> first_particle)
-    : dim_(model.params.dim), first_(std::move(first_particle)) {
+    : dim_(model.params.dim), first_(std::move(first_particle)), rest_(model.contact.rest_steps) {
   contact_ = make_contact_scene(model);
   const std::size_t count = bodies.size();
   surface_begin_.push_back(0);
@@ -144,6 +144,7 @@ void RigidBodySystem::set_prescribed_velocities(double t, Particles& p) const {
 void RigidBodySystem::compute_fluid_loads(const SphContext& ctx, const NeighborGrid& grid,
                                           const Particles& p, const Vec3& gravity) {
   dry_ = no_fluid_near(ctx, p);
+  if (!dry_) rest_.wake();  // fluid near: the bodies move again from the pose they slept in
   if (dry_)  // what the search would find: no fluid around any mirror point, a pressure of 0
     surface_pressure_.assign(surface_particles_.size(), 0.0);
   else
@@ -201,6 +202,10 @@ void RigidBodySystem::loads_of_surface_pressure(const Particles& p) {
 }
 
 long RigidBodySystem::advance(double t, double dt, const Vec3& gravity, Particles& p) {
+  if (rest_.asleep()) {  // still, balanced and dry: nothing the sub-steps would change
+    last_report_.substeps = 0;
+    return 0;
+  }
   try {
     last_report_ = contact::advance_bodies(models_, states_, fluid_loads_, contact_, workspace_,
                                            gravity, t, dt);
@@ -221,6 +226,12 @@ long RigidBodySystem::advance(double t, double dt, const Vec3& gravity, Particle
     angles_[b].update(s.orientation);
     if (models_[b].motion != rigid::MotionKind::kFixed) place_body(b, p);
   }
+  if (rest_.observe(models_, states_, fluid_loads_, contact_loads_, gravity, dt, dry_))
+    for (std::size_t b = 0; b < size(); ++b)
+      if (dynamic(b)) {  // asleep from here: exactly still, and so are its particles
+        states_[b].velocity = states_[b].angular_velocity = Vec3::Zero();
+        place_body(b, p);
+      }
   return last_report_.substeps;
 }
 
@@ -324,6 +335,7 @@ void RigidBodySystem::save_state(io::Checkpoint& c) const {
     pair.insert(pair.end(), {s.spring.x(), s.spring.y(), s.spring.z()});
   }
   c.counts["contact_prepared"] = ws.body_count >= 0;
+  c.counts["body_rest_steps"] = rest_.still_steps();
 }
 
 void RigidBodySystem::restore_state(const io::Checkpoint& c) {
@@ -342,6 +354,8 @@ void RigidBodySystem::restore_state(const io::Checkpoint& c) {
   vectors("body_contact_torque",
           [&](std::size_t b, const Vec3& v) { contact_loads_[b].torque = v; });
   last_report_.contact_load = contact_loads_;
+  // Absent from checkpoints written before bodies could sleep: awake.
+  rest_.restore(c.counts.count("body_rest_steps") ? int(c.count("body_rest_steps")) : 0);
   const std::vector<double>& q = c.real("body_orientation", 4 * count);
   const std::vector<double>& angle = c.real("body_angle", 2 * count);
   for (std::size_t b = 0; b < count; ++b) {

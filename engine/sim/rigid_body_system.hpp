@@ -15,6 +15,7 @@
 #include <string>
 #include <vector>
 
+#include "engine/contact/body_rest.hpp"
 #include "engine/contact/contact_substepper.hpp"
 #include "engine/core/neighbor_grid.hpp"
 #include "engine/core/sph_context.hpp"
@@ -57,6 +58,8 @@ class RigidBodySystem {
   // without a search, the same loads.
   void compute_fluid_loads(const SphContext& ctx, const NeighborGrid& grid, const Particles& p,
                            const Vec3& gravity);
+  // Whether the bodies sleep (contact/body_rest.hpp): dry, still and balanced for rest_steps.
+  bool asleep() const { return rest_.asleep(); }
   // Whether, at the last compute_fluid_loads, no fluid particle lay within the kernel's support
   // (2h) of any body particle or of its surface's mirror point: the fluid's bounding box and
   // every body's, widened by that reach, apart. Never in a periodic domain.
@@ -72,7 +75,8 @@ class RigidBodySystem {
   void set_fluid_load(std::size_t b, const rigid::BodyLoad& load) { fluid_loads_[b] = load; }
   bool dynamic(std::size_t b) const { return models_[b].motion == rigid::MotionKind::kDynamic; }
   // Every body from t to t + dt with contact sub-steps, then its particles. Returns the number
-  // of sub-steps; throws UnstableError when a body's state blows up or sub-stepping fails.
+  // of sub-steps (0 while the bodies sleep: contact/body_rest.hpp); throws UnstableError when a
+  // body's state blows up or sub-stepping fails.
   long advance(double t, double dt, const Vec3& gravity, Particles& p);
   // The contact guard: throws UnstableError when, after the step, a body overlaps a wall or
   // another body by more than max_overlap [m] (0: no check): the contact is too soft for the
@@ -124,6 +128,7 @@ class RigidBodySystem {
   contact::ContactScene contact_;
   contact::ContactWorkspace workspace_;
   contact::SubstepReport last_report_;
+  contact::RestWatch rest_;
 };
 
 }  // namespace washout

@@ -35,6 +35,9 @@ struct Washout {
   double drift = 0.0, drift_angle = 0.0;  // largest |x - x0|, |angle - angle0| before arrival
   double x_end = 0.0;                     // downstream displacement at kEndTime
   std::size_t fluid_inside = 0;           // fluid particles inside the pier or the girder (frames)
+  // Steps without contact sub-steps (the girder asleep: contact/body_rest.hpp) before the wave
+  // arrives and after, and the steps before it.
+  int asleep_before = 0, asleep_after = 0, steps_before = 0;
 };
 
 // Fluid particles strictly inside the pier or the girder in one frame; the girder's pose is its
@@ -78,6 +81,13 @@ Washout run_height(const char* height) {
     w.drift_angle = std::max(w.drift_angle, std::abs(s.angle[k] - s.angle[0]));
   }
   w.x_end = s.position[3 * (s.time.size() - 1)] - s.position[0];
+  const auto step_time = run.read_doubles("/stats/time");
+  const auto substeps = run.read_doubles("/stats/substeps");
+  for (std::size_t k = 0; k < step_time.size(); ++k) {
+    const bool before = step_time[k] < arrival;
+    w.steps_before += before;
+    (before ? w.asleep_before : w.asleep_after) += substeps[k] == 0.0;
+  }
   for (std::size_t f = 0; f < run.frame_count(); ++f)
     w.fluid_inside += fluid_inside(run.read_frame(f), s);
   const auto& r = w.report.summary;
@@ -85,11 +95,12 @@ Washout run_height(const char* height) {
       "water height %s m: %zu fluid particles, %ld steps, %.1f s; wave arrives %.3f s, "
       "leaves the pier %.3f s; drift before arrival %.2e m, %.2e rad; displacement at "
       "%.2f s: x %.4f m, y %.4f m; peak rotation %.1f deg; peak fluid force x %.0f N/m, "
-      "y %.0f N/m; fluid inside pier/girder in frames: %zu; wall crossings: %ld\n",
+      "y %.0f N/m; fluid inside pier/girder in frames: %zu; wall crossings: %ld; steps asleep "
+      "before the wave %d of %d, after it %d\n",
       height, out.summary.fluid_particles, out.summary.steps, out.summary.wall_seconds,
       r.arrival_time, r.leave_time, w.drift, w.drift_angle, kEndTime, w.x_end, r.displacement[1],
       r.peak_angle * 180 / std::numbers::pi, r.peak_force_horizontal, r.peak_force_vertical,
-      w.fluid_inside, w.wall_crossings);
+      w.fluid_inside, w.wall_crossings, w.asleep_before, w.steps_before, w.asleep_after);
   return w;
 }
 
@@ -107,6 +118,11 @@ TEST(GirderWashout, LowAndHighColumn2d) {
     // that and far below any sliding or rocking that could be seen.
     EXPECT_LT(w->drift, 1e-3 * kD0);
     EXPECT_LT(w->drift_angle, 1e-4);
+    // Settled and dry, it sleeps through most of the wait (no contact sub-steps), and never once
+    // the water is near: it wakes before the first load, when fluid comes within the kernel's
+    // reach of it.
+    EXPECT_GT(w->asleep_before, w->steps_before / 2);
+    EXPECT_EQ(w->asleep_after, 0);
     // Then it is washed off: it leaves the pier, moves downstream by more than a tenth of its
     // width and turns by more than 10 degrees (it tumbles off the pier's downstream edge).
     EXPECT_FALSE(std::isnan(r.leave_time)) << "the girder never left the pier";
