@@ -283,5 +283,47 @@ TEST(Restart, BodyInContactWithTheAggregatesSolverRestartedIsTheUninterruptedRun
   expect_sigterm_restart_is_uninterrupted("pcg_agg", "restart_box_sigterm_agg");
 }
 
+// The 2D girder asleep on its pier (no contact sub-steps: docs/rigid_bodies.md "Rest") when the
+// first part ends at 0.3 s; the continuation must sleep on and wake at the same step (0.576 s,
+// fluid within reach) and then be the uninterrupted run through the wave's arrival (0.62 s).
+TEST(Restart, GirderAsleepOnItsPierRestartedIsTheUninterruptedRun) {
+  const fs::path work = fs::path(WASHOUT_TEST_OUTPUT_DIR) / "restart_girder_asleep";
+  fs::remove_all(work);
+  const std::vector<std::string> run = {"run",       kScenes + "girder_washout_2d.lua",
+                                        "--set",     "d0=0.02",
+                                        "--set",     "end_time=0.7",
+                                        "--threads", "1",
+                                        "--quiet"};
+  const auto full = test::run_washout(with(run, {"--out", (work / "full").string()}),
+                                      (work / "full.log").string(), 120);
+  ASSERT_EQ(full.status, 0) << full.output;
+  const auto part =
+      test::run_washout(with(run, {"--out", (work / "part").string(), "--set", "end_time=0.3"}),
+                        (work / "part.log").string(), 120);
+  ASSERT_EQ(part.status, 0) << part.output;
+  const fs::path file = work / "part" / "girder_washout_2d.h5";
+  const auto rest =
+      test::run_washout(with(run, {"--restart", file.string()}), (work / "rest.log").string(), 120);
+  ASSERT_EQ(rest.status, 0) << rest.output;
+  const Comparison c = expect_same_run(work / "full" / "girder_washout_2d.h5", file, 0.3);
+  EXPECT_EQ(test::read_text(work / "full" / "girder.csv"),
+            test::read_text(work / "part" / "girder.csv"));
+  // It was asleep at the restart and woke after it: sub-steps 0 at 0.3 s, and again above 0.
+  const auto time = io::RunFileReader(file.string()).read_doubles("/stats/time");
+  const auto substeps = io::RunFileReader(file.string()).read_doubles("/stats/substeps");
+  int asleep_at_restart = 0, awake_after = 0;
+  for (std::size_t k = 0; k < time.size(); ++k) {
+    if (std::abs(time[k] - 0.3) < 1e-9) asleep_at_restart = substeps[k] == 0.0;
+    if (time[k] > 0.6) awake_after += substeps[k] > 0.0;
+  }
+  EXPECT_EQ(asleep_at_restart, 1);
+  EXPECT_GT(awake_after, 0);
+  EXPECT_GE(c.series_rows, 700u);
+  std::printf(
+      "girder asleep at the restart (t = 0.3 s), awake by 0.6 s: %d frames (%d after it) and "
+      "%d series of %zu rows bitwise equal, girder.csv equal\n",
+      c.frames, c.frames_after, c.series, c.series_rows);
+}
+
 }  // namespace
 }  // namespace washout
