@@ -116,6 +116,9 @@ void print_summary(std::FILE* out, const Simulation& sim, const RunSummary& s) {
                  "  of those, moved to a free place (out of a closing gap, or off another "
                  "particle): %ld\n",
                  s.gap_relocations);
+  if (s.bodies_asleep_steps > 0)
+    std::fprintf(out, "  bodies asleep at rest, dry (no contact sub-steps): %ld of the %ld steps\n",
+                 s.bodies_asleep_steps, s.steps);
   if (s.retired_particles > 0)
     std::fprintf(out,
                  "  fluid particles retired as they left the domain: %zu (%.2g %% of the fluid; "

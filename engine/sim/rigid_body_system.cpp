@@ -204,6 +204,7 @@ void RigidBodySystem::loads_of_surface_pressure(const Particles& p) {
 long RigidBodySystem::advance(double t, double dt, const Vec3& gravity, Particles& p) {
   if (rest_.asleep()) {  // still, balanced and dry: nothing the sub-steps would change
     last_report_.substeps = 0;
+    ++asleep_steps_;
     return 0;
   }
   try {
@@ -336,6 +337,7 @@ void RigidBodySystem::save_state(io::Checkpoint& c) const {
   }
   c.counts["contact_prepared"] = ws.body_count >= 0;
   c.counts["body_rest_steps"] = rest_.still_steps();
+  c.counts["body_asleep_steps"] = asleep_steps_;
 }
 
 void RigidBodySystem::restore_state(const io::Checkpoint& c) {
@@ -356,6 +358,7 @@ void RigidBodySystem::restore_state(const io::Checkpoint& c) {
   last_report_.contact_load = contact_loads_;
   // Absent from checkpoints written before bodies could sleep: awake.
   rest_.restore(c.counts.count("body_rest_steps") ? int(c.count("body_rest_steps")) : 0);
+  asleep_steps_ = c.counts.count("body_asleep_steps") ? long(c.count("body_asleep_steps")) : 0;
   const std::vector<double>& q = c.real("body_orientation", 4 * count);
   const std::vector<double>& angle = c.real("body_angle", 2 * count);
   for (std::size_t b = 0; b < count; ++b) {

@@ -60,6 +60,7 @@ class RigidBodySystem {
                            const Vec3& gravity);
   // Whether the bodies sleep (contact/body_rest.hpp): dry, still and balanced for rest_steps.
   bool asleep() const { return rest_.asleep(); }
+  long asleep_steps() const { return asleep_steps_; }  // fluid steps slept so far
   // Whether, at the last compute_fluid_loads, no fluid particle lay within the kernel's support
   // (2h) of any body particle or of its surface's mirror point: the fluid's bounding box and
   // every body's, widened by that reach, apart. Never in a periodic domain.
@@ -129,6 +130,7 @@ class RigidBodySystem {
   contact::ContactWorkspace workspace_;
   contact::SubstepReport last_report_;
   contact::RestWatch rest_;
+  long asleep_steps_ = 0;
 };
 
 }  // namespace washout

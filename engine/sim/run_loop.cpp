@@ -8,6 +8,7 @@
 
 #include "engine/fluid/isph_stages.hpp"
 #include "engine/io/checkpoint.hpp"
+#include "engine/sim/rigid_body_system.hpp"
 #include "engine/sim/simulation.hpp"
 
 namespace washout {
@@ -138,6 +139,7 @@ RunSummary Simulation::run(const std::vector<RunObserver*>& observers,
   summary.gap_relocations = gap_relocations_;
   summary.retired_particles = retired_.size();
   summary.first_retirement = describe_first_retirement();
+  summary.bodies_asleep_steps = bodies_ ? bodies_->asleep_steps() : 0;
   summary.stage_seconds = timer_.totals();
   for (auto* o : observers) o->on_finish(*this, summary);
   return summary;

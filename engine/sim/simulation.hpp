@@ -75,6 +75,7 @@ struct RunSummary {
                              // back onto another particle (free_spot.hpp)
   std::size_t retired_particles = 0;  // fluid that left the domain and was retired
   std::string first_retirement;       // the first of them: which, where, when
+  long bodies_asleep_steps = 0;       // steps the bodies slept at rest (contact/body_rest.hpp)
   std::string output_path;            // where an observer keeps the run (RunObserver::kept_in)
   std::vector<std::pair<std::string, double>> stage_seconds;
 };

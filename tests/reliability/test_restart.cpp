@@ -102,6 +102,7 @@ struct ContinuedRun {
 };
 ContinuedRun run_whole_and_in_two(const fs::path& work, const std::vector<std::string>& run) {
   fs::remove_all(work);
+  fs::create_directories(work);  // for the first run's log
   const auto full = test::run_washout(with(run, {"--out", (work / "full").string()}),
                                       (work / "full.log").string(), 120);
   EXPECT_EQ(full.status, 0) << full.output;
@@ -289,6 +290,7 @@ TEST(Restart, BodyInContactWithTheAggregatesSolverRestartedIsTheUninterruptedRun
 TEST(Restart, GirderAsleepOnItsPierRestartedIsTheUninterruptedRun) {
   const fs::path work = fs::path(WASHOUT_TEST_OUTPUT_DIR) / "restart_girder_asleep";
   fs::remove_all(work);
+  fs::create_directories(work);  // for the first run's log
   const std::vector<std::string> run = {"run",       kScenes + "girder_washout_2d.lua",
                                         "--set",     "d0=0.02",
                                         "--set",     "end_time=0.7",
@@ -318,6 +320,14 @@ TEST(Restart, GirderAsleepOnItsPierRestartedIsTheUninterruptedRun) {
   }
   EXPECT_EQ(asleep_at_restart, 1);
   EXPECT_GT(awake_after, 0);
+  // The summary counts the steps slept before the restart too.
+  const auto asleep_line = [](const std::string& output) {
+    const auto at = output.find("bodies asleep at rest");
+    return at == std::string::npos ? std::string("(none)")
+                                   : output.substr(at, output.find('\n', at) - at);
+  };
+  EXPECT_EQ(asleep_line(rest.output), asleep_line(full.output));
+  EXPECT_NE(asleep_line(full.output), "(none)") << full.output;
   EXPECT_GE(c.series_rows, 700u);
   std::printf(
       "girder asleep at the restart (t = 0.3 s), awake by 0.6 s: %d frames (%d after it) and "
