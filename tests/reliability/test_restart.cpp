@@ -94,24 +94,28 @@ int continued_from(const std::string& output) {
   return at == std::string::npos ? -1 : std::atoi(output.c_str() + at + 12);
 }
 
-// `run` whole into work/full, and again into work/part stopped at its own end_time = 0.15 s,
-// then continued there with --restart (to the end_time in `run` or the scene's).
+// `run` whole into work/full, and again into work/part stopped at its own end_time = `split`
+// (0.15 s unless given), then continued there with --restart (to the end_time in `run` or the
+// scene's). `run_file`: the scene's run file name.
 struct ContinuedRun {
+  test::ProgramResult full;  // the uninterrupted run's output
   test::ProgramResult rest;  // the continuation's output
   fs::path file;             // work/part's run file, continued
 };
-ContinuedRun run_whole_and_in_two(const fs::path& work, const std::vector<std::string>& run) {
+ContinuedRun run_whole_and_in_two(const fs::path& work, const std::vector<std::string>& run,
+                                  const std::string& run_file = "dambreak_2d.h5",
+                                  const std::string& split = "0.15") {
   fs::remove_all(work);
   fs::create_directories(work);  // for the first run's log
-  const auto full = test::run_washout(with(run, {"--out", (work / "full").string()}),
-                                      (work / "full.log").string(), 120);
-  EXPECT_EQ(full.status, 0) << full.output;
-  const auto half =
-      test::run_washout(with(run, {"--out", (work / "part").string(), "--set", "end_time=0.15"}),
-                        (work / "half.log").string(), 120);
-  EXPECT_EQ(half.status, 0) << half.output;
   ContinuedRun c;
-  c.file = work / "part" / "dambreak_2d.h5";
+  c.full = test::run_washout(with(run, {"--out", (work / "full").string()}),
+                             (work / "full.log").string(), 120);
+  EXPECT_EQ(c.full.status, 0) << c.full.output;
+  const auto half = test::run_washout(
+      with(run, {"--out", (work / "part").string(), "--set", "end_time=" + split}),
+      (work / "half.log").string(), 120);
+  EXPECT_EQ(half.status, 0) << half.output;
+  c.file = work / "part" / run_file;
   c.rest = test::run_washout(with(run, {"--restart", c.file.string()}),
                              (work / "rest.log").string(), 120);
   return c;
@@ -122,7 +126,7 @@ TEST(Restart, DamBreakContinuedToALaterEndTimeIsTheUninterruptedRun) {
   const std::vector<std::string> run = {
       "run", kScenes + "dambreak_2d.lua", "--set", "d0=0.0146", "--threads", "1", "--quiet"};
   // The first half, stopped at 0.15 s, then continued to the scene's 0.3 s.
-  const auto [rest, file] = run_whole_and_in_two(work, run);
+  const auto [full, rest, file] = run_whole_and_in_two(work, run);
   ASSERT_EQ(rest.status, 0) << rest.output;
   EXPECT_EQ(continued_from(rest.output), 30) << rest.output;
   const Comparison c = expect_same_run(work / "full" / "dambreak_2d.h5", file, 0.15);
@@ -165,7 +169,7 @@ TEST(Restart, RetiredFluidStaysRetired) {
                                         "--set",     "reorder_interval=7",
                                         "--threads", "1",
                                         "--quiet"};
-  const auto [rest, file] = run_whole_and_in_two(work, run);
+  const auto [full, rest, file] = run_whole_and_in_two(work, run);
   ASSERT_EQ(rest.status, 0) << rest.output;
   // Particles had left before the restart, or the test would not test it.
   io::RunFileReader continued(file.string());
@@ -289,23 +293,12 @@ TEST(Restart, BodyInContactWithTheAggregatesSolverRestartedIsTheUninterruptedRun
 // fluid within reach) and then be the uninterrupted run through the wave's arrival (0.62 s).
 TEST(Restart, GirderAsleepOnItsPierRestartedIsTheUninterruptedRun) {
   const fs::path work = fs::path(WASHOUT_TEST_OUTPUT_DIR) / "restart_girder_asleep";
-  fs::remove_all(work);
-  fs::create_directories(work);  // for the first run's log
   const std::vector<std::string> run = {"run",       kScenes + "girder_washout_2d.lua",
                                         "--set",     "d0=0.02",
                                         "--set",     "end_time=0.7",
                                         "--threads", "1",
                                         "--quiet"};
-  const auto full = test::run_washout(with(run, {"--out", (work / "full").string()}),
-                                      (work / "full.log").string(), 120);
-  ASSERT_EQ(full.status, 0) << full.output;
-  const auto part =
-      test::run_washout(with(run, {"--out", (work / "part").string(), "--set", "end_time=0.3"}),
-                        (work / "part.log").string(), 120);
-  ASSERT_EQ(part.status, 0) << part.output;
-  const fs::path file = work / "part" / "girder_washout_2d.h5";
-  const auto rest =
-      test::run_washout(with(run, {"--restart", file.string()}), (work / "rest.log").string(), 120);
+  const auto [full, rest, file] = run_whole_and_in_two(work, run, "girder_washout_2d.h5", "0.3");
   ASSERT_EQ(rest.status, 0) << rest.output;
   const Comparison c = expect_same_run(work / "full" / "girder_washout_2d.h5", file, 0.3);
   EXPECT_EQ(test::read_text(work / "full" / "girder.csv"),
