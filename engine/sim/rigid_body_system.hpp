@@ -58,9 +58,9 @@ class RigidBodySystem {
   // without a search, the same loads.
   void compute_fluid_loads(const SphContext& ctx, const NeighborGrid& grid, const Particles& p,
                            const Vec3& gravity);
-  // Whether the bodies sleep (contact/body_rest.hpp): dry, still and balanced for rest_steps.
-  bool asleep() const { return rest_.asleep(); }
-  long asleep_steps() const { return asleep_steps_; }  // fluid steps slept so far
+  // Fluid steps the bodies have slept so far (contact/body_rest.hpp: dry, still and balanced
+  // for rest_steps).
+  long asleep_steps() const { return asleep_steps_; }
   // Whether, at the last compute_fluid_loads, no fluid particle lay within the kernel's support
   // (2h) of any body particle or of its surface's mirror point: the fluid's bounding box and
   // every body's, widened by that reach, apart. Never in a periodic domain.

@@ -49,19 +49,22 @@ TEST(BodyRest, DroppedBoxSleepsOnceSettledAtItsStaticOverlap) {
   RestWatch watch(steps);
   std::vector<double> speed;  // per step: the fastest point of the box
   int asleep_at = -1, touching = 0, sleeps = 0;
-  for (int n = 0; n < 2000 && asleep_at < 0; ++n) {
-    const SubstepReport report =
-        advance_bodies(models, states, fluid, scene, workspace, kGravity, n * dt, dt);
-    touching = report.most_touching;
-    speed.push_back(states[0].velocity.norm() +
-                    states[0].angular_velocity.norm() * model.bounding_radius);
+  SubstepReport report;
+  for (int n = 0; n < 2000; ++n) {
+    // Asleep, the box is no longer advanced (as RigidBodySystem::advance does), and the watch,
+    // still asked every step with the held loads, must not report a second falling asleep.
+    if (!watch.asleep()) {
+      report = advance_bodies(models, states, fluid, scene, workspace, kGravity, n * dt, dt);
+      touching = report.most_touching;
+      speed.push_back(states[0].velocity.norm() +
+                      states[0].angular_velocity.norm() * model.bounding_radius);
+    }
     if (watch.observe(models, states, fluid, report.contact_load, kGravity, dt, true)) {
-      asleep_at = n;
+      if (asleep_at < 0) asleep_at = n;
       ++sleeps;
     }
   }
   ASSERT_GE(asleep_at, 0) << "the box never fell asleep in 2 s";
-  EXPECT_TRUE(watch.asleep());
   double fastest_before = 0.0;  // over the steps counted towards sleep
   for (int n = asleep_at - steps + 1; n <= asleep_at; ++n)
     fastest_before = std::max(fastest_before, speed[n]);
@@ -76,14 +79,12 @@ TEST(BodyRest, DroppedBoxSleepsOnceSettledAtItsStaticOverlap) {
       "%.1e), before them %.2f m/s; %d particles touching, overlap error %.1e\n",
       (asleep_at + 1) * dt, steps, fastest_before, kRestSpeed * kG * dt, fastest_while_bouncing,
       touching, offset);
-  EXPECT_EQ(sleeps, 1);
+  EXPECT_EQ(sleeps, 1);       // once, over the 2 s
   EXPECT_GT(asleep_at, 100);  // the bounces last about 0.3 s
   EXPECT_LT(fastest_before, kRestSpeed * kG * dt);
   EXPECT_GT(fastest_while_bouncing, 0.1);  // it did bounce: no sleep in the air
   EXPECT_EQ(touching, 200);
   EXPECT_LT(offset, 1e-6);
-  // Asleep, it is counted no further and reports nothing new.
-  EXPECT_FALSE(watch.observe(models, states, fluid, fluid, kGravity, dt, true));
   EXPECT_TRUE(watch.asleep());
 }
 
