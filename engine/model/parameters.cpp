@@ -69,7 +69,7 @@ const std::vector<ParameterInfo>& ParameterSet::engine_table() {
        d.alpha_near_surface},
       {"alpha_scaling", "-",
        "how alpha follows the step: \"per_time\" (alpha is the fraction of the density error "
-       "relaxed in a step as long as the default limits give, cfl 0.2, viscous_number 0.125 and "
+       "relaxed in a step as long as the default limits give, cfl 0.3, viscous_number 0.125 and "
        "dt_max 1 ms; a shorter step, set by a smaller cfl, dt_max or dt, relaxes at the same rate "
        "in time, alpha dt / dt_default, so that it does not turn the summation density's noise "
        "into velocity faster) or \"per_step\" (alpha per step at any step, as in the paper; "
@@ -181,8 +181,8 @@ const std::vector<ParameterInfo>& ParameterSet::engine_table() {
        "0: surface_smoothing is taken every step (its damping grows as the step shrinks); > 0: "
        "the Courant number C_ref = dt U / h (U: the fastest fluid particle, at least sqrt(g H)) "
        "of the step that takes it, a step of Courant number C taking 1 - (1 - s)^(C / C_ref); "
-       "0.2 (the default cfl) with surface_gradient = \"ghost\" makes the front independent of "
-       "the step (docs/method.md, twelfth session)",
+       "0.2 with surface_gradient = \"ghost\" makes the front independent of the step (measured "
+       "at dt_max 1 to 0.25 ms; docs/method.md, twelfth session)",
        d.surface_smoothing_courant},
       {"output_interval", "s", "simulated time between output frames", d.output_interval},
       {"max_speed", "m/s", "a faster particle stops the run as unstable; 0 = 10 sqrt(2 g L)",

@@ -83,7 +83,7 @@ struct SimulationParameters {
   double free_surface_threshold = 0.9;
   std::string surface_pressure = "ghost";
   double dt = 0.0;  // 0: adaptive
-  double cfl = 0.2;
+  double cfl = 0.3;
   double viscous_number = 0.125;
   double dt_max = 1e-3;
   double dt_min = 1e-7;

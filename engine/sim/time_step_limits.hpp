@@ -18,7 +18,7 @@ const char* step_limit_name(StepLimit limit);
 
 struct TimeStepInputs {
   double fixed_dt = 0.0;  // > 0: the scene's fixed step
-  double cfl = 0.2, viscous_number = 0.125, dt_max = 1e-3;
+  double cfl = 0.3, viscous_number = 0.125, dt_max = 1e-3;
   double h = 0.0;
   double max_speed = 0.0;      // largest fluid speed of the last step
   double max_viscosity = 0.0;  // nu + largest eddy viscosity

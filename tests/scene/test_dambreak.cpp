@@ -8,6 +8,8 @@
 #include <array>
 #include <cmath>
 
+#include "engine/model/parameters.hpp"
+#include "engine/sim/time_step_limits.hpp"
 #include "support/scene_runner.hpp"
 
 namespace washout {
@@ -194,13 +196,14 @@ TEST(DamBreak, Front2dDefault) {
   EXPECT_NEAR(run.double_attribute("error_residual_height_at_front_delay"), height_delayed, 1e-9);
   EXPECT_LT(height, 0.045);
   // The lead is made before T = 1.15 (the release); from there the surge runs at Martin &
-  // Moyce's speed: 2.1 % slower at a/20, 0.9 % at a/40, 0.4 % faster at a/80 (docs/method.md,
-  // the twenty-third session). Bound: 3 % at a/20.
+  // Moyce's speed: at the default Courant number 0.3, 10.9 % slower at a/10, 3.3 % at a/20, 0.2 %
+  // at a/40 (at 0.2: 2.1 % at a/20, 0.9 % at a/40, 0.4 % faster at a/80; docs/method.md, the
+  // twenty-third and forty-fifth sessions). Bound: 5 % at a/20, 1.5 times the measured figure.
   const double speed = front_speed_error(r.h5);
   std::printf("surge speed for 1.15 <= T <= 3.15 against Martin & Moyce's: %+.2f %%\n",
               100 * speed);
   EXPECT_NEAR(run.double_attribute("error_front_speed"), std::abs(speed), 1e-9);
-  EXPECT_LT(std::abs(speed), 0.03);
+  EXPECT_LT(std::abs(speed), 0.05);
   // Near the surface only the wall's clearance (engine/fluid/ppe_source.cpp) holds a particle
   // off the floor, gently: one touching it and being put back is allowed (none did at a/20 with
   // the seventh session's defaults); a row of them would mean a leaking wall.
@@ -251,17 +254,34 @@ TEST(DamBreak, SmallStepsRelaxTheDensityAtTheDefaultRate) {
   EXPECT_LT(r.rms, 0.25);
   EXPECT_LT(std::abs(speed), 0.1);
   EXPECT_LE(r.wall_crossings, 2);
-  // The alpha each step used (/stats/alpha): never above the given 0.05, and where both the run's
-  // step and the default limits' are set by the Courant number, exactly 0.02 / 0.2 of it. The
-  // first steps, from rest, are longer than the default's 1 ms cap and keep 0.05.
+  // The alpha each step used (/stats/alpha): never above the given 0.05, and at every step the
+  // Courant number set (/stats/dt_limit "cfl"), 0.05 dt / dt_default exactly, where dt_default is
+  // the step the default limits take in the same state: cfl_default h / max|u|, i.e.
+  // cfl_default / 0.02 times the run's step, or dt_max if that is shorter. At the default cfl 0.3
+  // the surge at a/20 (below 2.6 m/s) never outruns dt_max, so dt_max is the reference there.
+  // The first steps, from rest, are longer than the default's 1 ms cap and keep 0.05.
   io::RunFileReader run(r.h5);
-  auto alpha = run.read_doubles("/stats/alpha");
+  const auto alpha = run.read_doubles("/stats/alpha");
+  const auto dt = run.read_doubles("/stats/dt");
+  const auto limit = run.read_doubles("/stats/dt_limit");
   ASSERT_FALSE(alpha.empty());
-  for (double a : alpha) EXPECT_LE(a, 0.05);
-  std::sort(alpha.begin(), alpha.end());
-  const double median = alpha[alpha.size() / 2];
-  std::printf("alpha per step: %.4g to %.4g, median %.6g\n", alpha.front(), alpha.back(), median);
-  EXPECT_NEAR(median, 0.005, 1e-12);
+  ASSERT_EQ(alpha.size(), dt.size());
+  ASSERT_EQ(alpha.size(), limit.size());
+  const SimulationParameters defaults;
+  int advective_steps = 0;
+  for (std::size_t k = 0; k < alpha.size(); ++k) {
+    EXPECT_LE(alpha[k], 0.05);
+    if (limit[k] != double(StepLimit::advective)) continue;
+    ++advective_steps;
+    const double dt_default = std::min(defaults.cfl / 0.02 * dt[k], defaults.dt_max);
+    EXPECT_NEAR(alpha[k], 0.05 * std::min(1.0, dt[k] / dt_default), 1e-12) << "step " << k;
+  }
+  auto sorted = alpha;
+  std::sort(sorted.begin(), sorted.end());
+  std::printf("alpha per step: %.4g to %.4g, median %.6g; %d of %zu steps set by the cfl\n",
+              sorted.front(), sorted.back(), sorted[sorted.size() / 2], advective_steps,
+              alpha.size());
+  EXPECT_GT(advective_steps, int(alpha.size()) / 2);
 }
 
 TEST(DamBreak, Front3dCoarse) {

@@ -2,8 +2,12 @@
 // completed by the PPE's own ghost values, so that it sees P = 0 at d0/2 beyond the surface.
 // Two claims of docs/stability.md and docs/method.md (ninth session), each a run:
 // - it removes the amplification per step that the surface velocity smoothing otherwise has to
-//   hold: without smoothing the 2D dam break at a/20 completes with it, while the corrected
-//   form stops after 110-120 steps at any cfl (printed for comparison);
+//   hold: without smoothing the 2D dam break at a/20 completes with it (213 steps at the default
+//   Courant number 0.3). When the option came (ninth session) the corrected form stopped after
+//   110-120 steps at any cfl; later sessions' changes let it complete the 2D run too (241 steps at
+//   cfl 0.3, 398 at 0.2 with alpha per step; measured at the forty-fifth session), so it is printed
+//   for comparison, not asserted. The mode remains where the corrected form needs the smoothing: 3D
+//   still water (docs/method.md, "Known limitations");
 // - a floating box takes its Archimedes draft: within 2 % at H/d0 = 10, the mean over the last
 //   two of six seconds, about three heave periods (+1.5 to +1.6 %; settled by 10 s at +1.6 %,
 //   the default corrected form at +0.2 %). A shorter window's mean depends on the heave's phase:
@@ -41,7 +45,7 @@ TEST(SurfaceGradientOption, GhostFormHoldsTheDamBreakWithoutSurfaceSmoothing) {
   std::printf("ghost, no smoothing: exit %d after %ld steps, front RMS %.4f\n", after.exit_code,
               after.summary.steps, score(after, "front"));
   EXPECT_EQ(after.exit_code, 0);
-  EXPECT_GT(after.summary.steps, 250);  // several times the 110-120 steps the mode needs
+  EXPECT_NEAR(after.summary.time, 0.27, 1e-9);  // the whole surge, to the table's T = 3
 }
 
 TEST(SurfaceGradientOption, FloatingBoxTakesItsArchimedesDraft) {
