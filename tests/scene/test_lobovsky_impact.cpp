@@ -109,12 +109,13 @@ TEST(LobovskyImpact, ImpulseInsideTheMeasuredBandWhateverTheStep) {
   ASSERT_LT(low, reference);
   ASSERT_GT(high, reference);
 
-  // d0 = H/30 at the default Courant number 0.2, and at half of it. At half the step the impact
-  // is chaotic: the solver's tolerance alone (1e-6 to 1e-9) or another solver moves the impulse
-  // over 0.61-0.71 (docs/method.md, the twenty-fourth session), where at 0.2 it converges with the
-  // tolerance (0.621 at 1e-6, 0.629 from 1e-7). So the half step is a small ensemble: the same run
-  // at three tolerances, each held to the band, their mean to the step's claim below.
-  const Impact coarse_step = run_impact("lobovsky_impact_cfl02", {{"d0", "0.01"}}, phase);
+  // d0 = H/30 at the default Courant number (0.3 since the forty-fifth session: 600 steps, dt_max
+  // sets nearly all of them) and at 0.1. At the small step the impact is chaotic: the
+  // solver's tolerance alone (1e-6 to 1e-9) or another solver moves the impulse over 0.61-0.71
+  // (docs/method.md, the twenty-fourth session), where at the default step it converges with the
+  // tolerance (at cfl 0.2: 0.621 at 1e-6, 0.629 from 1e-7). So the small step is a small ensemble:
+  // the same run at three tolerances, each held to the band, their mean to the step's claim below.
+  const Impact coarse_step = run_impact("lobovsky_impact_default_step", {{"d0", "0.01"}}, phase);
   std::vector<Impact> fine_steps;
   for (const char* tolerance : {"1e-6", "1e-7", "1e-8"})
     fine_steps.push_back(
@@ -138,11 +139,13 @@ TEST(LobovskyImpact, ImpulseInsideTheMeasuredBandWhateverTheStep) {
   }
   // The step moves the impulse less than the experiment's repeats scatter: half the width of
   // the band (0.117, 17 % of the median). With alpha per unit time (docs/method.md, the
-  // thirty-fourth session) the half step's three runs agree (0.717-0.738) and sit 0.104 above
-  // the default step's 0.626; single runs at a quarter and an eighth of the step gave 0.701 and
-  // 0.577 (with alpha per step 0.709 at the half step, 0.541 at the quarter): the impact's
-  // impulse scatters with the step over about the band's width, around the median.
-  std::printf("half step, mean of the three: impulse %.3f (%+.1f %% from the default step's)\n",
+  // thirty-fourth session) the cfl 0.1 runs agree (0.717-0.738) and sat 0.104 above the default
+  // step's 0.626 while the default was 0.2 (alpha at half the rate); with the default at 0.3 (alpha
+  // at a third) 0.663-0.683 against 0.672, their mean +0.3 % (forty-fifth session); single runs at
+  // a quarter and an eighth of the 0.2 step gave 0.701 and 0.577 (with alpha per step 0.709 at the
+  // half step, 0.541 at the quarter): the impact's impulse scatters with the step over about the
+  // band's width, around the median.
+  std::printf("cfl 0.1, mean of the three: impulse %.3f (%+.1f %% from the default step's)\n",
               fine_mean, 100 * (fine_mean / coarse_step.impulse - 1));
   EXPECT_LT(std::abs(fine_mean - coarse_step.impulse), 0.5 * (high - low));
 }
