@@ -18,7 +18,10 @@ const char* step_limit_name(StepLimit limit);
 
 struct TimeStepInputs {
   double fixed_dt = 0.0;  // > 0: the scene's fixed step
-  double cfl = 0.3, viscous_number = 0.125, dt_max = 1e-3;
+  // The limits come from the run's parameters (SimulationParameters holds their defaults); no
+  // defaults here, so that a second copy cannot drift from those. Left at 0, the step is 0 and
+  // the dt_min guard stops the run.
+  double cfl = 0.0, viscous_number = 0.0, dt_max = 0.0;
   double h = 0.0;
   double max_speed = 0.0;      // largest fluid speed of the last step
   double max_viscosity = 0.0;  // nu + largest eddy viscosity
