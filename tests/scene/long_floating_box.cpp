@@ -84,7 +84,8 @@ void expect_settled(const std::string& scene, int dim, double d0, double end_tim
 
 // 2D: ten seconds, by when the heave has died down to a millimetre, and the mean over the last
 // two against the accuracy issue's target, 2 % of D. Measured +0.24 % and +0.20 % with the
-// pressure gradient normalised by each particle's neighbours (height spread ratios 0.03 and 0.02);
+// pressure gradient normalised by each particle's neighbours (height spread ratios 0.03 and 0.02;
+// +0.60 % and +0.55 % in the forty-sixth session, ratios 0.02 and 0.02);
 // +2.9 % at d0 = 0.01 m with the lattice normalisation alone, where the settled water's pressure
 // was 3 % low (docs/method.md, seventeenth session). (The time mean of the first three seconds
 // depends on the heave's phase in the window: 1.3 % and 4.8 % over 0.5-1.5 s.)
