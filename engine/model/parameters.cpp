@@ -69,11 +69,11 @@ const std::vector<ParameterInfo>& ParameterSet::engine_table() {
        d.alpha_near_surface},
       {"alpha_scaling", "-",
        "how alpha follows the step: \"per_time\" (alpha is the fraction of the density error "
-       "relaxed in a step as long as the default limits give, cfl 0.3, viscous_number 0.125 and "
-       "dt_max 1 ms; a shorter step, set by a smaller cfl, dt_max or dt, relaxes at the same rate "
-       "in time, alpha dt / dt_default, so that it does not turn the summation density's noise "
-       "into velocity faster) or \"per_step\" (alpha per step at any step, as in the paper; "
-       "docs/method.md)",
+       "relaxed in a step as long as the default cfl, viscous_number and dt_max give (their "
+       "rows); a shorter step, set by a smaller cfl, dt_max or dt, relaxes at the same rate "
+       "in time, alpha dt / dt_default: the density term's velocity kick stays the default "
+       "step's size, though more kicks a second add up in still water, docs/stability.md) or "
+       "\"per_step\" (alpha per step at any step, as in the paper; docs/method.md)",
        d.alpha_scaling},
       {"free_surface_threshold", "-",
        "a particle whose density is below this fraction of the full-support density is on the "
