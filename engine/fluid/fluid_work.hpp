@@ -32,6 +32,11 @@ struct FluidWork {
   std::vector<std::int32_t> unknown;  // PPE row of a fluid particle, or -1
   CsrMatrix matrix;
   std::vector<double> rhs, solution;
+  // density_kick = "positions" (density_kick.cpp): the assembly keeps the density term's share
+  // of the right-hand side alone; its pressure (per fluid particle) and the velocity it gave.
+  bool keep_density_rhs = false;
+  std::vector<double> density_rhs, density_solution, density_pressure;
+  std::array<std::vector<double>, 3> density_kick;
 };
 
 // The pair factor (s_i + s_j)/2 of the gradient scale; s_j = s_i for a boundary neighbour, and 1

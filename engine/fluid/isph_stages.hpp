@@ -173,6 +173,22 @@ void smooth_surface_velocity(const SphContext& ctx, const NeighborList& list, Pa
 // Step 4: x^{n+1} = x^n + dt u^{n+1} (corrector.cpp). Returns the largest fluid speed.
 double advance_positions(const SphContext& ctx, Particles& p, double dt);
 
+// density_kick = "positions" (density_kick.cpp): the density term moves the particles but does
+// not stay in their velocity. The relative residual its loose second solve stops at: 0.1 kept
+// the whole still-tank cure of the exact solve, 0.3 most of it (docs/stability.md).
+constexpr double kDensityKickTolerance = 0.1;
+// work.density_pressure from the second solve's work.density_solution (0 where not solved for).
+void scatter_density_pressure(const FluidWork& work, std::size_t fluid_count,
+                              std::vector<double>& pressure);
+// The corrector with P - P_d (kept in work.density_kick) and with P (in the velocity, which
+// moves the particles); work.density_kick becomes their difference and the pressure P - P_d.
+void correct_velocity_keeping_density_kick(const SphContext& ctx, const NeighborList& list,
+                                           Particles& p, FluidWork& work,
+                                           const WallConditions& walls, const Vec3& gravity,
+                                           double dt, const GradientForms& forms);
+// After the move: the kick taken back out of the velocity.
+void remove_density_kick(const FluidWork& work, Particles& p);
+
 // Fickian particle shifting after the position update (particle_shifting.cpp):
 //   delta r = -(A h^2 + A_u h |u| dt) grad C.
 void shift_particles(const SphContext& ctx, const NeighborList& list, Particles& p,

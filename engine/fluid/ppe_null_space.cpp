@@ -78,7 +78,7 @@ bool every_row_reaches_an_anchor(const std::vector<std::uint8_t>& anchored_row,
 }
 
 std::size_t fix_free_pressure_levels(const std::vector<std::uint8_t>& anchored_row, CsrMatrix& A,
-                                     std::vector<double>& rhs) {
+                                     std::vector<double>& rhs, std::vector<double>& second_rhs) {
   const std::size_t rows = A.rows;
   // Most steps have a free surface in every region: then nothing is left to fix, and the sweeps
   // show it at a fraction of the union-find's cost (which was 2.5 % of the same-case 3D dam break
@@ -125,12 +125,14 @@ std::size_t fix_free_pressure_levels(const std::vector<std::uint8_t>& anchored_r
   for (std::size_t r = 0; r < rows; ++r)
     free_regions += root_of[r] == static_cast<std::int32_t>(r) && !anchored[r];
   if (free_regions == 0) return 0;
-  std::vector<double> rhs_sum(rows, 0.0);
+  const bool second = !second_rhs.empty();
+  std::vector<double> rhs_sum(rows, 0.0), second_sum(second ? rows : 0, 0.0);
   std::vector<std::int64_t> size(rows, 0);
   for (std::size_t r = 0; r < rows; ++r) {
     const auto root = root_of[r];
     if (anchored[root]) continue;
     rhs_sum[root] += rhs[r];
+    if (second) second_sum[root] += second_rhs[r];
     ++size[root];
   }
   std::size_t fixed = 0;
@@ -138,6 +140,7 @@ std::size_t fix_free_pressure_levels(const std::vector<std::uint8_t>& anchored_r
     const auto root = root_of[r];
     if (anchored[root]) continue;
     rhs[r] -= rhs_sum[root] / size[root];
+    if (second) second_rhs[r] -= second_sum[root] / size[root];
     if (static_cast<std::size_t>(root) == r) {
       A.value[A.row_start[r]] *= 2.0;
       ++fixed;

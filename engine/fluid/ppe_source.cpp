@@ -63,6 +63,11 @@ void subtract_ppe_source(const SphContext& ctx, const NeighborList& list, const 
       g > 0.0 ? std::sqrt(g * ctx.d0) : std::numeric_limits<double>::infinity();
   // Held since the previous step's move (empty in the first step, or with the option off).
   const bool strain = work.surface_strain.size() == n;
+  // The density term's share alone, for density_kick = "positions" (density_kick.cpp).
+  if (work.keep_density_rhs)
+    work.density_rhs.assign(work.rhs.size(), 0.0);
+  else
+    work.density_rhs.clear();
 #pragma omp parallel for schedule(static)
   for (std::size_t i = 0; i < n; ++i) {
     const std::int32_t row = work.unknown[i];
@@ -113,6 +118,7 @@ void subtract_ppe_source(const SphContext& ctx, const NeighborList& list, const 
                                  : strain && !work.free_surface[i] ? work.surface_strain[i]
                                                                    : 0.0;
     work.rhs[row] -= ctx.rho0 / dt * div_u + density_scale * density_error;
+    if (work.keep_density_rhs) work.density_rhs[row] = -density_scale * density_error;
   }
 }
 

@@ -61,7 +61,8 @@ PpeStatistics assemble_pressure_poisson(const SphContext& ctx, const NeighborLis
   PpeStatistics stats;
   stats.unknowns = unknowns;
   stats.nonzeros = work.matrix.nonzeros();
-  stats.pinned_components = fix_free_pressure_levels(flags.anchored, work.matrix, work.rhs);
+  stats.pinned_components =
+      fix_free_pressure_levels(flags.anchored, work.matrix, work.rhs, work.density_rhs);
   return stats;
 }
 

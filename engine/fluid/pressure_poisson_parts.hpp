@@ -53,9 +53,11 @@ void subtract_ppe_source(const SphContext& ctx, const NeighborList& list, const 
 
 // A closed body of fluid with no free surface (a filled tank, a periodic channel) defines its
 // pressure only up to a constant: its right-hand side is made compatible and one value fixed
-// (ppe_null_space.cpp). Returns how many such regions were fixed.
+// (ppe_null_space.cpp). Returns how many such regions were fixed. A second right-hand side for
+// the same matrix (the density term's alone, density_kick.cpp), if not empty, is made compatible
+// with it.
 std::size_t fix_free_pressure_levels(const std::vector<std::uint8_t>& anchored, CsrMatrix& A,
-                                     std::vector<double>& rhs);
+                                     std::vector<double>& rhs, std::vector<double>& second_rhs);
 
 // Whether sweeps in row order carry a flag from the anchored rows to every row along the
 // pattern (fix_free_pressure_levels' shortcut): true only when no region is free; false may also

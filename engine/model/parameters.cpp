@@ -75,6 +75,13 @@ const std::vector<ParameterInfo>& ParameterSet::engine_table() {
        "step's size, though more kicks a second add up in still water, docs/stability.md) or "
        "\"per_step\" (alpha per step at any step, as in the paper; docs/method.md)",
        d.alpha_scaling},
+      {"density_kick", "-",
+       "where the density term's share of the pressure acts: \"velocity\" (its gradient stays "
+       "in the velocity, as in the paper) or \"positions\" (it moves the particles but is not "
+       "kept in their velocity, so that the kicks of many short steps do not add up to motion "
+       "in still water; costs a loose second solve and a second gradient a step, and the "
+       "pressure written is the divergence-free part's; docs/stability.md)",
+       d.density_kick},
       {"free_surface_threshold", "-",
        "a particle whose density is below this fraction of the full-support density is on the "
        "free surface and takes P = 0",
@@ -416,6 +423,7 @@ SimulationParameters SimulationParameters::from(const ParameterSet& set) {
   if (p.alpha > 1) throw ParameterError("alpha", "parameter 'alpha' must lie in [0, 1]");
   p.alpha_near_surface = one_of("alpha_near_surface", {"strain", "off"});
   p.alpha_scaling = one_of("alpha_scaling", {"per_time", "per_step"});
+  p.density_kick = one_of("density_kick", {"velocity", "positions"});
   p.free_surface_threshold = in_unit_interval("free_surface_threshold");
   p.surface_pressure = one_of("surface_pressure", {"ghost", "on_particles"});
   p.dt = non_negative("dt");

@@ -80,6 +80,11 @@ struct SimulationParameters {
   // limits' length, and a shorter step relaxes at the same rate in time (alpha dt / dt_default);
   // "per_step": alpha per step at any step (docs/method.md, thirty-fourth session).
   std::string alpha_scaling = "per_time";
+  // "velocity": the density term's pressure gradient stays in the velocity, as in the paper;
+  // "positions": it moves the particles but is not kept in their velocity, which costs a loose
+  // second solve and gradient a step and keeps still water still at any step
+  // (engine/fluid/density_kick.cpp; docs/stability.md, forty-sixth session).
+  std::string density_kick = "velocity";
   double free_surface_threshold = 0.9;
   std::string surface_pressure = "ghost";
   double dt = 0.0;  // 0: adaptive

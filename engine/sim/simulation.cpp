@@ -83,6 +83,13 @@ Simulation::Simulation(Model model)
   walls_.dynamic = model_.params.wall_pressure == "dynamic" ||
                    (model_.params.wall_pressure == "auto" && dynamic_bodies);
   body_coupled_ = walls_.dynamic && dynamic_bodies;
+  // The bodies' coupling with the pressure does not take the density term's share apart: a
+  // floating box with density_kick = "positions" gained energy from its first steps.
+  if (dynamic_bodies && model_.params.density_kick == "positions")
+    throw SceneError(
+        "density_kick = \"positions\" is not available with dynamic bodies (their coupling with "
+        "the pressure keeps the density term in it); use \"velocity\"",
+        "", "density_kick");
 
   // Domain: given, or the scene's bounding box with a generous margin (for blow-up detection).
   const auto& prm = model_.params;
@@ -159,6 +166,8 @@ Simulation::Simulation(Model model)
   features.surface_smoothing = prm.surface_smoothing > 0;
   features.surface_strain = prm.alpha > 0 && prm.alpha_near_surface == "strain";
   features.gradient_scale = gradient_scale_ = prm.gradient_scale == "particle";
+  features.density_kick = density_kick_ = prm.density_kick == "positions";
+  work_.keep_density_rhs = density_kick_;
   features.moving_walls = !moving_walls_.empty();
   features.probes = !model_.probes.empty();
   features.reorder = prm.reorder_interval > 0;
@@ -336,6 +345,9 @@ void Simulation::run_stage(Stage stage, StepInProgress& now) {
     case Stage::ppe_solve:
       solve_pressure(now);
       return;
+    case Stage::density_pressure:
+      solve_density_pressure();
+      return;
     case Stage::body_loads:
       if (walls_.dynamic) {
         const CouplingReport coupling =
@@ -347,8 +359,12 @@ void Simulation::run_stage(Stage stage, StepInProgress& now) {
       }
       return;
     case Stage::corrector:
-      correct_velocity(ctx_, neighbors_, particles_, work_, walls_, prm.gravity, dt,
-                       gradient_forms_);
+      if (density_kick_)
+        correct_velocity_keeping_density_kick(ctx_, neighbors_, particles_, work_, walls_,
+                                              prm.gravity, dt, gradient_forms_);
+      else
+        correct_velocity(ctx_, neighbors_, particles_, work_, walls_, prm.gravity, dt,
+                         gradient_forms_);
       return;
     case Stage::surface_smoothing:
       smooth_surface_velocity(ctx_, neighbors_, particles_, work_,
@@ -361,6 +377,9 @@ void Simulation::run_stage(Stage stage, StepInProgress& now) {
       return;
     case Stage::advect:
       max_speed_ = advance_positions(ctx_, particles_, dt);
+      return;
+    case Stage::density_kick:
+      remove_density_kick(work_, particles_);
       return;
     case Stage::shifting:
       shift_particles(ctx_, neighbors_, particles_, work_, prm.shifting, prm.shifting_with_speed,
@@ -394,6 +413,26 @@ void Simulation::run_stage(Stage stage, StepInProgress& now) {
   }
 }
 
+namespace {
+
+// A solve that fails or does not converge stops the run as unstable, saying which.
+SolveReport solve_or_stop(LinearSolver& solver, const CsrMatrix& A, const std::vector<double>& b,
+                          std::vector<double>& x, const std::string& what) {
+  SolveReport solve;
+  try {
+    solve = solver.solve(A, b, x);
+  } catch (const SolverError& e) {
+    throw UnstableError("the " + what + " solve failed: " + e.what());
+  }
+  if (!solve.converged)
+    throw UnstableError("the " + what + " solver did not converge in " +
+                        std::to_string(solve.iterations) + " iterations (residual " +
+                        std::to_string(solve.relative_residual) + ")");
+  return solve;
+}
+
+}  // namespace
+
 void Simulation::solve_pressure(StepInProgress& now) {
   const auto& prm = model_.params;
   const std::string wanted = resolve_solver(prm.solver, prm.dim, now.ppe.unknowns, body_coupled_);
@@ -401,21 +440,26 @@ void Simulation::solve_pressure(StepInProgress& now) {
     solver_ = make_solver(wanted, prm.solver_tolerance, prm.solver_max_iterations);
   last_solver_ = wanted;
   gather_pressure_guess(particles_, work_);
-  SolveReport solve;
-  try {
-    solve = solver_->solve(work_.matrix, work_.rhs, work_.solution);
-  } catch (const SolverError& e) {
-    throw UnstableError(std::string("pressure solve failed: ") + e.what());
-  }
-  if (!solve.converged)
-    throw UnstableError("the pressure solver did not converge in " +
-                        std::to_string(solve.iterations) + " iterations (residual " +
-                        std::to_string(solve.relative_residual) + ")");
+  const SolveReport solve =
+      solve_or_stop(*solver_, work_.matrix, work_.rhs, work_.solution, "pressure");
   scatter_pressure(work_, particles_);
   now.report.ppe_iterations = solve.iterations;
   now.report.ppe_residual = solve.relative_residual;
   now.report.ppe_unknowns = now.ppe.unknowns;
   total_ppe_iterations_ += solve.iterations;
+}
+
+// density_kick = "positions": the density term's share of the right-hand side alone, by Jacobi
+// CG from zero to a loose tolerance (density_kick.cpp); its iterations count with the PPE's.
+void Simulation::solve_density_pressure() {
+  if (!density_solver_)
+    density_solver_ =
+        make_solver("pcg", kDensityKickTolerance, model_.params.solver_max_iterations);
+  work_.density_solution.assign(work_.matrix.rows, 0.0);
+  const SolveReport solve = solve_or_stop(*density_solver_, work_.matrix, work_.density_rhs,
+                                          work_.density_solution, "density term's pressure");
+  total_ppe_iterations_ += solve.iterations;
+  scatter_density_pressure(work_, particles_.fluid_count, work_.density_pressure);
 }
 
 void Simulation::check_health(StepReport& report) {

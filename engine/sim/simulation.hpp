@@ -184,6 +184,7 @@ class Simulation {
   };
   void run_stage(Stage stage, StepInProgress& now);
   void solve_pressure(StepInProgress& now);
+  void solve_density_pressure();
   // The motion of wall w if it moves, else nullptr (its shape then sits where it was built).
   const MovingWall* motion_of_wall(std::size_t w) const;
   // Signed distance of x from the nearest wall or body (negative inside one).
@@ -232,7 +233,9 @@ class Simulation {
   std::vector<Stage> plan_;
   bool ghost_surface_ = true;
   GradientForms gradient_forms_;
-  bool gradient_scale_ = false;   // the density's walk also takes the gradient moments
+  bool gradient_scale_ = false;  // the density's walk also takes the gradient moments
+  bool density_kick_ = false;    // density_kick = "positions" (density_kick.cpp)
+  std::unique_ptr<LinearSolver> density_solver_;  // its loose second solve
   bool stable_ppe_rows_ = false;  // one PPE row per fluid particle (pcg_amg's reuse)
   double time_ = 0.0;
   long step_ = 0;

@@ -48,6 +48,10 @@ const char* stage_name(Stage stage) {
       return "wall_positions";
     case Stage::bodies:
       return "bodies";
+    case Stage::density_pressure:
+      return "density_pressure";
+    case Stage::density_kick:
+      return "density_kick";
     case Stage::clock:
       return "clock";
     case Stage::checks:
@@ -62,6 +66,7 @@ const char* stage_name(Stage stage) {
 
 std::vector<Stage> compose_step(const SceneFeatures& f) {
   std::vector<Stage> plan;
+  plan.reserve(32);  // every stage at most once
   if (f.reorder) plan.push_back(Stage::reorder);
   plan.insert(plan.end(), {Stage::neighbours, Stage::density});
   if (f.gradient_scale) plan.push_back(Stage::gradient_scale);  // needs the surface, for the PPE
@@ -74,12 +79,14 @@ std::vector<Stage> compose_step(const SceneFeatures& f) {
   if (f.prescribed_bodies) plan.push_back(Stage::prescribed_bodies);
   if (f.dynamic_wall) plan.push_back(Stage::wall_accelerations);
   plan.insert(plan.end(), {Stage::ppe_assembly, Stage::ppe_solve});
+  if (f.density_kick) plan.push_back(Stage::density_pressure);
   if (f.bodies)
     plan.push_back(Stage::body_loads);  // P^{n+1} belongs to x^n: before the fluid moves
   plan.push_back(Stage::corrector);
   if (f.surface_smoothing) plan.push_back(Stage::surface_smoothing);
   if (f.surface_strain) plan.push_back(Stage::surface_strain);  // with the velocity that moves
   plan.push_back(Stage::advect);
+  if (f.density_kick) plan.push_back(Stage::density_kick);  // before shifting, which reads u
   if (f.shifting) plan.push_back(Stage::shifting);
   if (f.moving_walls) plan.push_back(Stage::wall_positions);
   if (f.bodies) plan.push_back(Stage::bodies);

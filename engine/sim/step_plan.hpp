@@ -23,11 +23,13 @@ enum class Stage : std::uint8_t {
   wall_accelerations,  // the walls' normal accelerations for the dynamic wall condition
   ppe_assembly,        // step 2: the stabilized PPE
   ppe_solve,           //         and its solution
+  density_pressure,    // the density term's pressure alone, loosely (density_kick = positions)
   body_loads,          // pressure loads on the bodies (solved with them when dynamic)
   corrector,           // step 3: u = u* - dt/rho0 grad P
   surface_smoothing,   // free-surface particles take part of their neighbours' mean velocity
   surface_strain,      // the volume error near the surface, dt <div u>, before the move
   advect,              // step 4: x += dt u
+  density_kick,        // the density term's velocity taken back out after the move
   shifting,            // Fickian particle shifting
   wall_positions,      // prescribed wall positions at t + dt
   bodies,              // Newton-Euler with DEM contact, sub-stepped
@@ -51,6 +53,7 @@ struct SceneFeatures {
   bool surface_smoothing = false;  // XSPH on the free surface
   bool surface_strain = false;     // the density-invariance term near the surface by its strain
   bool gradient_scale = false;     // the pressure gradient normalised by each particle's support
+  bool density_kick = false;       // the density term moves the particles, not their velocity
   bool moving_walls = false;       // a wall with a prescribed motion
   bool probes = false;             // any probe
   bool reorder = false;            // the fluid sorted by cell every reorder_interval steps

@@ -39,7 +39,7 @@ CsrMatrix from_edges(std::size_t rows, const std::vector<std::pair<int, int>>& e
 
 struct Fixed {
   std::size_t regions = 0;
-  std::vector<double> rhs, diagonal;
+  std::vector<double> rhs, second, diagonal;  // second: 3 rhs + 1 before, made compatible too
 };
 
 Fixed fix_on_threads(int threads, CsrMatrix A, const std::vector<std::uint8_t>& anchored,
@@ -47,9 +47,12 @@ Fixed fix_on_threads(int threads, CsrMatrix A, const std::vector<std::uint8_t>& 
   const int before = omp_get_max_threads();
   omp_set_num_threads(threads);
   Fixed f;
-  f.regions = fix_free_pressure_levels(anchored, A, rhs);
+  std::vector<double> second(rhs.size());
+  for (std::size_t r = 0; r < rhs.size(); ++r) second[r] = 3.0 * rhs[r] + 1.0;
+  f.regions = fix_free_pressure_levels(anchored, A, rhs, second);
   omp_set_num_threads(before);
   f.rhs = rhs;
+  f.second = second;
   for (std::size_t r = 0; r < A.rows; ++r) f.diagonal.push_back(A.value[A.row_start[r]]);
   return f;
 }
@@ -81,6 +84,12 @@ TEST(PpeNullSpace, ClosedRegionsAreFoundAlikeOnAnyNumberOfThreads) {
   EXPECT_NEAR(region_mean(one, 0, 998), 0.0, 1e-14);
   EXPECT_NEAR(region_mean(one, 1, 499), 0.0, 1e-14);
   for (int r = 501; r < int(rows); r += 2) EXPECT_EQ(one.rhs[r], rhs[r]) << r;
+  // The second right-hand side (the density term's alone, density_kick.cpp) of the same regions:
+  // made compatible in the free ones, 3 (rhs - its mean) there; left alone in the anchored one.
+  for (int r = 0; r < int(rows); ++r) {
+    const bool anchored_region = r % 2 == 1 && r > 500;
+    EXPECT_NEAR(one.second[r], anchored_region ? 3.0 * rhs[r] + 1.0 : 3.0 * one.rhs[r], 1e-13) << r;
+  }
   EXPECT_EQ(one.diagonal[0], 2.0 * A.value[A.row_start[0]]);
   EXPECT_EQ(one.diagonal[1], 2.0 * A.value[A.row_start[1]]);
   for (std::size_t r = 2; r < rows; ++r) EXPECT_EQ(one.diagonal[r], A.value[A.row_start[r]]) << r;
@@ -91,6 +100,7 @@ TEST(PpeNullSpace, ClosedRegionsAreFoundAlikeOnAnyNumberOfThreads) {
     const Fixed many = fix_on_threads(threads, A, anchored, rhs);
     EXPECT_EQ(many.regions, one.regions) << threads << " threads";
     EXPECT_EQ(many.rhs, one.rhs) << threads << " threads";
+    EXPECT_EQ(many.second, one.second) << threads << " threads";
     EXPECT_EQ(many.diagonal, one.diagonal) << threads << " threads";
   }
 }
