@@ -10,8 +10,6 @@
 // (kDensityKickTolerance), for its pressure P_d; the corrector takes the gradient of P - P_d
 // and of P, the particles move with the latter, and the difference, the kick, is taken back out
 // of the velocity after the move. The pressure written is P - P_d, the divergence-free part's.
-#include <algorithm>
-
 #include "engine/fluid/isph_stages.hpp"
 
 namespace washout {

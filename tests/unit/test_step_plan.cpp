@@ -58,6 +58,24 @@ TEST(StepPlan, BodiesBringTheirStagesAndNothingElse) {
   EXPECT_TRUE(has(compose_step(f), Stage::prescribed_bodies));
 }
 
+// density_kick = "positions": the density term's pressure is solved after the PPE's and before
+// the corrector (which takes both), and its velocity comes back out after the move, before
+// shifting reads the velocity; without the option neither stage is there.
+TEST(StepPlan, TheDensityKickIsSolvedBeforeTheCorrectorAndTakenOutAfterTheMove) {
+  SceneFeatures f;
+  f.shifting = f.surface_smoothing = f.surface_strain = true;
+  EXPECT_FALSE(has(compose_step(f), Stage::density_pressure));
+  EXPECT_FALSE(has(compose_step(f), Stage::density_kick));
+  f.density_kick = true;
+  const auto plan = compose_step(f);
+  std::printf("density kick: %s\n", text(plan).c_str());
+  const auto at = [&](Stage s) { return std::find(plan.begin(), plan.end(), s) - plan.begin(); };
+  EXPECT_EQ(at(Stage::density_pressure), at(Stage::ppe_solve) + 1);
+  EXPECT_LT(at(Stage::density_pressure), at(Stage::corrector));
+  EXPECT_EQ(at(Stage::density_kick), at(Stage::advect) + 1);
+  EXPECT_LT(at(Stage::density_kick), at(Stage::shifting));
+}
+
 TEST(StepPlan, LoadsAreTakenBeforeTheFluidMovesAndChecksAfterTheClock) {
   SceneFeatures f;
   f.bodies = f.moving_walls = f.shifting = f.turbulence = f.probes = f.wall_friction = true;
