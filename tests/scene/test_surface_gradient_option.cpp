@@ -24,12 +24,7 @@
 namespace washout {
 namespace {
 
-double score(const cli::RunOutcome& out, const std::string& name) {
-  for (const lua::ValidationScore& s : out.scores)
-    if (s.name == name) return s.error;
-  ADD_FAILURE() << "no score '" << name << "'";
-  return 1e9;
-}
+using testing::score;
 
 TEST(SurfaceGradientOption, GhostFormHoldsTheDamBreakWithoutSurfaceSmoothing) {
   const lua::Overrides unsmoothed{

@@ -43,6 +43,14 @@ inline cli::RunOutcome run_scene(const std::string& scene, const std::string& te
   return outcome;
 }
 
+// A validation scene's own score by name (scripts/validation.lua); a test failure if it has none.
+inline double score(const cli::RunOutcome& out, const std::string& name) {
+  for (const lua::ValidationScore& s : out.scores)
+    if (s.name == name) return s.error;
+  ADD_FAILURE() << "no score '" << name << "'";
+  return 1e9;
+}
+
 // Columns of a CSV with one header line, keyed by header name; rows filtered by `keep`.
 inline std::map<std::string, std::vector<std::string>> read_csv(const std::string& path) {
   std::ifstream in(path);
